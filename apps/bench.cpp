@@ -1,0 +1,63 @@
+#include "bench.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/scene.hpp"
+#include "runner.hpp"
+
+namespace monosph {
+
+int run_bench(const BenchOptions& opt) {
+  nlohmann::json rows = nlohmann::json::array();
+  fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12} {:>14} {:>12}\n", "dim", "particles", "threads", "steps",
+             "wall [s]", "part-steps/s", "nbuild [us/p]");
+  struct Case {
+    int dim;
+    long n;
+    std::string file;
+  };
+  std::vector<Case> cases;
+  for (long n : opt.sizes) cases.push_back({2, n, opt.cases_dir + "/acoustic_wave/scene.yaml"});
+  if (opt.size3d > 0) cases.push_back({3, opt.size3d, opt.cases_dir + "/acoustic_wave/scene_3d.yaml"});
+  for (const auto& c : cases) {
+    Scene base = load_scene_file(c.file);
+    double vol = 1;
+    for (int a = 0; a < base.dimension; ++a) vol *= base.domain_max[a] - base.domain_min[a];
+    const double dp = std::pow(vol / c.n, 1.0 / base.dimension);
+    for (int th : opt.threads) {
+      RunOptions ro;
+      ro.scene = c.file;
+      ro.overrides = {fmt::format("dp={:.17g}", dp), "output.checkpoint_every=0"};
+      ro.threads = th;
+      ro.quiet = true;
+      ro.max_steps = opt.steps;
+      ro.write_output = false;
+      RunResult r = run_scene(ro);
+      const double nb_us = r.neighbour_builds ? 1e6 * r.neighbour_seconds / r.neighbour_builds / r.particles : 0;
+      fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12.3f} {:>14.4g} {:>12.3f}\n", c.dim, r.particles, th, r.steps,
+                 r.wall_seconds, r.particle_steps_per_second, nb_us);
+      std::fflush(stdout);
+      rows.push_back({{"dimension", c.dim},
+                      {"particles", r.particles},
+                      {"threads", th},
+                      {"steps", r.steps},
+                      {"wall_seconds", r.wall_seconds},
+                      {"particle_steps_per_second", r.particle_steps_per_second},
+                      {"neighbour_build_us_per_particle", nb_us}});
+    }
+  }
+  if (!opt.json.empty()) {
+    std::ofstream out(opt.json);
+    if (!out) throw InputError("bench: cannot write " + opt.json);
+    out << nlohmann::json{{"scene", "acoustic_wave"}, {"results", rows}}.dump(2) << "\n";
+    fmt::print("written {}\n", opt.json);
+  }
+  return 0;
+}
+
+}  // namespace monosph

@@ -1,0 +1,20 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace monosph {
+
+struct BenchOptions {
+  std::string json;
+  long steps = 200;
+  std::vector<long> sizes{10000, 40000, 160000};
+  long size3d = 50000;
+  std::vector<int> threads{1, 2};
+  std::string cases_dir = MONOSPH_CASES_DIR;
+};
+
+// `monosph bench`: particle-steps per second of the acoustic-wave scene (2D sizes, one 3D size)
+// on each thread count, and neighbour-build time per particle. Prints a table; optional JSON.
+int run_bench(const BenchOptions& opt);
+
+}  // namespace monosph

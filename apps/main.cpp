@@ -1,0 +1,62 @@
+// monosph command line: run, info, bench.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "bench.hpp"
+#include "info.hpp"
+#include "runner.hpp"
+#include "core/types.hpp"
+
+int main(int argc, char** argv) {
+  using namespace monosph;
+  CLI::App app{"monosph: Eulerian-kernel SPH for fluids, hourglass-controlled solids and grains"};
+  app.require_subcommand(1);
+
+  RunOptions run;
+  auto* cmd_run = app.add_subcommand("run", "run a scene to its end time");
+  cmd_run->add_option("scene", run.scene, "scene file (YAML)");
+  cmd_run->add_option("--set", run.overrides, "override a scene key, e.g. --set end_time=0.1")->take_all();
+  cmd_run->add_option("--out", run.out, "output folder (default out/<scene name>)");
+  cmd_run->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  cmd_run->add_option("--restart", run.restart, "continue from a checkpoint file (.h5)");
+  cmd_run->add_flag("--quiet", run.quiet, "no progress line");
+
+  std::string info_scene;
+  std::vector<std::string> info_set;
+  auto* cmd_info = app.add_subcommand("info", "particle counts, modules and memory of a scene");
+  cmd_info->add_option("scene", info_scene, "scene file (YAML)")->required();
+  cmd_info->add_option("--set", info_set, "override a scene key")->take_all();
+
+  BenchOptions bench;
+  auto* cmd_bench = app.add_subcommand("bench", "particle-steps per second of the acoustic-wave scene");
+  cmd_bench->add_option("--json", bench.json, "write the results as JSON to this file");
+  cmd_bench->add_option("--steps", bench.steps, "steps per measurement")->check(CLI::PositiveNumber);
+  cmd_bench->add_option("--sizes", bench.sizes, "2D particle counts (approximate)");
+  cmd_bench->add_option("--size-3d", bench.size3d, "3D particle count (approximate, 0: skip)");
+  cmd_bench->add_option("--threads", bench.threads, "thread counts to measure");
+  cmd_bench->add_option("--cases", bench.cases_dir, "folder that holds the cases");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  try {
+    if (*cmd_run) {
+      if (run.scene.empty() && run.restart.empty()) throw InputError("run: give a scene file or --restart FILE");
+      return run_scene(run).exit_code;
+    }
+    if (*cmd_info) return print_info(info_scene, info_set);
+    if (*cmd_bench) return run_bench(bench);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "monosph: error: {}\n", e.what());
+    return 2;
+  } catch (const RunAborted& e) {
+    fmt::print(stderr, "monosph: run stopped: {}\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "monosph: internal error: {}\n", e.what());
+    return 4;
+  }
+  return 0;
+}

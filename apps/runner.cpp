@@ -1,0 +1,321 @@
+#include "runner.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "assemble.hpp"
+#include "core/checkpoint.hpp"
+#include "core/output_vtk.hpp"
+#include "core/probes.hpp"
+#include "core/scene.hpp"
+#include "core/simulation.hpp"
+
+namespace fs = std::filesystem;
+
+namespace monosph {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string hms(double s) {
+  if (!std::isfinite(s) || s < 0) return "--:--:--";
+  long t = static_cast<long>(s + 0.5);
+  return fmt::format("{}:{:02}:{:02}", t / 3600, (t / 60) % 60, t % 60);
+}
+
+// Progress on a terminal (one updating line) or plain log lines every 10 s otherwise.
+class Progress {
+ public:
+  Progress(bool quiet, double t0, double t_end)
+      : quiet_(quiet), tty_(isatty(STDERR_FILENO)), t0_(t0), t_end_(t_end), start_(Clock::now()) {}
+  void update(double t, long steps, bool force = false) {
+    if (quiet_) return;
+    const auto now = Clock::now();
+    const double since = std::chrono::duration<double>(now - last_).count();
+    if (!force && since < (tty_ ? 0.25 : 10.0)) return;
+    last_ = now;
+    const double wall = std::chrono::duration<double>(now - start_).count();
+    const double frac = (t - t0_) / (t_end_ - t0_);
+    const double eta = frac > 0 ? wall * (1 - frac) / frac : NAN;
+    std::string line = fmt::format("t = {:.4e} / {:.4e} s ({:5.1f}%)  step {}  {:.0f} steps/s  ETA {}",
+                                   t, t_end_, 100 * std::min(1.0, t / t_end_), steps,
+                                   wall > 0 ? (steps - steps0_) / wall : 0.0, hms(eta));
+    if (tty_)
+      fmt::print(stderr, "\r{:<100}", line);
+    else
+      fmt::print(stderr, "{}\n", line);
+  }
+  void start_steps(long s) { steps0_ = s; }
+  void finish() {
+    if (!quiet_ && tty_) fmt::print(stderr, "\n");
+  }
+
+ private:
+  bool quiet_, tty_;
+  double t0_, t_end_;
+  long steps0_ = 0;
+  Clock::time_point start_, last_{};
+};
+
+// Reads the probe CSV back (columns: time, step, probes...) for the reference metrics.
+void read_csv(const fs::path& file, std::vector<std::string>& head, std::vector<std::vector<double>>& cols) {
+  std::ifstream in(file);
+  std::string line;
+  if (!std::getline(in, line)) return;
+  head.clear();
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
+  cols.assign(head.size(), {});
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::size_t k = 0;
+    for (std::string c; std::getline(ls, c, ',') && k < cols.size(); ++k) cols[k].push_back(std::stod(c));
+  }
+}
+
+template <int D>
+RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* restart_meta) {
+  RunResult res;
+  const fs::path out = opt.out.empty() ? fs::path("out") / scene.name : fs::path(opt.out);
+  Simulation<D> sim(scene);
+  assemble_modules(sim);
+  double next_output = 0, next_probe = 0, next_ckpt = scene.checkpoint_every;
+  if (restart_meta) {
+    read_checkpoint<D>(opt.restart, sim.particles());
+    sim.set_state(restart_meta->time, restart_meta->step, restart_meta->dt);
+    auto get = [&](const char* k, double d) {
+      auto it = restart_meta->scalars.find(k);
+      return it == restart_meta->scalars.end() ? d : it->second;
+    };
+    next_output = get("next_output", 0);
+    next_probe = get("next_probe", 0);
+    next_ckpt = get("next_checkpoint", scene.checkpoint_every);
+    sim.init(true);
+  } else {
+    sim.create_particles();
+    sim.init(false);
+  }
+  // Output fields the scene asks for must exist.
+  auto& p = sim.particles();
+  for (const auto& f : scene.output_fields) {
+    if (!p.has(f)) {
+      std::string names;
+      for (const auto& ff : p.fields()) names += (names.empty() ? "" : ", ") + ff.name;
+      throw InputError("output.fields: no particle field '" + f + "' in this scene (available: " + names + ")");
+    }
+  }
+  Probes<D> probes(sim);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  {
+    std::ofstream test(out / ".write-test");
+    if (ec || !test) throw InputError("output: cannot write to directory " + out.string());
+  }
+  fs::remove(out / ".write-test", ec);
+
+  std::unique_ptr<VtkSeries<D>> vtk;
+  if (opt.write_output) {
+    vtk = std::make_unique<VtkSeries<D>>(out, scene.name);
+    if (restart_meta) vtk->restore_frames(sim.time());
+  }
+  const fs::path csv_path = out / "probes.csv";
+  std::ofstream csv;
+  if (opt.write_output) {
+    if (restart_meta) {
+      // Keep the rows before the restart time, then append.
+      std::vector<std::string> head;
+      std::vector<std::vector<double>> cols;
+      read_csv(csv_path, head, cols);
+      csv.open(csv_path);
+      csv << "time,step";
+      for (const auto& c : probes.columns()) csv << "," << c;
+      csv << "\n";
+      if (!cols.empty() && head.size() == probes.columns().size() + 2)
+        for (std::size_t r = 0; r < cols[0].size(); ++r) {
+          if (cols[0][r] > sim.time() + 1e-300) break;
+          for (std::size_t k = 0; k < cols.size(); ++k) csv << (k ? "," : "") << fmt::format("{:.17g}", cols[k][r]);
+          csv << "\n";
+        }
+    } else {
+      csv.open(csv_path);
+      csv << "time,step";
+      for (const auto& c : probes.columns()) csv << "," << c;
+      csv << "\n";
+    }
+    if (!csv) throw InputError("output: cannot write " + csv_path.string());
+  }
+  auto sample = [&] {
+    if (!opt.write_output) return;
+    auto row = probes.sample(sim);
+    csv << fmt::format("{:.17g},{}", sim.time(), sim.step());
+    for (double v : row) csv << fmt::format(",{:.17g}", v);
+    csv << "\n";
+  };
+  auto checkpoint = [&](const fs::path& file) {
+    sim.rebuild_neighbours();  // the restarted run starts from the same list (bit-identical)
+    CheckpointMeta meta;
+    meta.time = sim.time();
+    meta.step = sim.step();
+    meta.dt = sim.dt();
+    meta.scene_yaml = scene.yaml;
+    meta.next_id = p.next_id();
+    meta.scalars["next_output"] = next_output;
+    meta.scalars["next_probe"] = next_probe;
+    meta.scalars["next_checkpoint"] = next_ckpt;
+    write_checkpoint<D>(file, p, meta);
+  };
+
+  const double eps = 1e-12 * scene.end_time;
+  if (!restart_meta) {
+    if (opt.write_output) vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+    next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
+    sample();
+    next_probe = scene.probe_every;
+  }
+  Progress progress(opt.quiet, sim.time(), scene.end_time);
+  progress.start_steps(sim.step());
+  std::string status = "completed";
+  const auto t0 = Clock::now();
+  const long step0 = sim.step();
+  try {
+    while (sim.time() < scene.end_time - eps) {
+      // Land exactly on checkpoint times so that restarts reproduce the run.
+      double stop = scene.end_time;
+      if (scene.checkpoint_every > 0) stop = std::min(stop, next_ckpt);
+      sim.advance(stop);
+      if (sim.time() >= next_probe - eps) {
+        sample();
+        next_probe += scene.probe_every;
+        if (next_probe <= sim.time()) next_probe = sim.time();
+      }
+      if (opt.write_output && sim.time() >= next_output - eps) {
+        vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+        next_output += scene.output_every > 0 ? scene.output_every : scene.end_time;
+      }
+      if (opt.write_output && scene.checkpoint_every > 0 && sim.time() >= next_ckpt - eps) {
+        next_ckpt += scene.checkpoint_every;
+        checkpoint(out / "checkpoint.h5");
+      }
+      progress.update(sim.time(), sim.step());
+      if (opt.max_steps > 0 && sim.step() - step0 >= opt.max_steps) break;
+    }
+  } catch (const RunAborted& e) {
+    status = e.what();
+    res.exit_code = 3;
+    fmt::print(stderr, "\nmonosph: run stopped: {}\n", e.what());
+    if (opt.write_output) {
+      try {
+        auto f = vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+        fmt::print(stderr, "monosph: last state written to {}\n", f.string());
+      } catch (const std::exception& w) {
+        fmt::print(stderr, "monosph: could not write the last state: {}\n", w.what());
+      }
+    }
+  }
+  progress.update(sim.time(), sim.step(), true);
+  progress.finish();
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  res.particles = p.size();
+  res.steps = sim.step() - step0;
+  res.wall_seconds = wall;
+  res.particle_steps_per_second = wall > 0 ? double(res.particles) * res.steps / wall : 0;
+  res.neighbour_builds = sim.neighbours().builds();
+  res.neighbour_seconds = sim.neighbours().build_seconds();
+  if (!opt.write_output) return res;
+  if (res.exit_code == 0) checkpoint(out / "final.h5");
+  csv.close();
+
+  nlohmann::json js;
+  js["scene"] = scene.name;
+  js["dimension"] = D;
+  js["particles"] = res.particles;
+  js["steps"] = sim.step();
+  js["steps_this_run"] = res.steps;
+  js["simulated_time"] = sim.time();
+  js["wall_seconds"] = wall;
+  js["particle_steps_per_second"] = res.particle_steps_per_second;
+  js["threads"] = omp_get_max_threads();
+  js["ranks"] = 1;
+  js["status"] = status;
+  js["dp"] = scene.dp;
+  js["h"] = scene.h();
+  js["kernel"] = kernel_name(scene.kernel);
+  js["neighbour_builds"] = res.neighbour_builds;
+  js["neighbour_seconds"] = res.neighbour_seconds;
+  js["last_dt"] = sim.dt();
+  js["output"] = (out / (scene.name + ".pvd")).string();
+  js["metrics"] = nlohmann::json::object();
+  {
+    std::vector<std::string> head;
+    std::vector<std::vector<double>> cols;
+    read_csv(csv_path, head, cols);
+    for (const auto& ref : scene.references) {
+      const auto& spec = *std::find_if(scene.probes.begin(), scene.probes.end(),
+                                       [&](const ProbeSpec& s) { return s.name == ref.probe; });
+      std::string col = spec.type == "momentum" || spec.type == "reaction_force" ? ref.probe + "_x" : ref.probe;
+      auto it = std::find(head.begin(), head.end(), col);
+      double value = NAN;
+      if (it != head.end() && !cols.empty()) value = measure_series(ref.measure, cols[0], cols[it - head.begin()], ref.start);
+      nlohmann::json m;
+      m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+      m["reference"] = ref.value;
+      m["relative_error"] = std::isfinite(value) && ref.value != 0
+                                ? nlohmann::json(std::abs(value - ref.value) / std::abs(ref.value))
+                                : nlohmann::json(nullptr);
+      js["metrics"][ref.name] = m;
+    }
+  }
+  std::ofstream(out / "summary.json") << js.dump(2) << "\n";
+  if (!opt.quiet) {
+    fmt::print(stderr, "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {} threads\n",
+               status == "completed" ? "completed" : "stopped", res.particles, res.steps, wall,
+               res.particle_steps_per_second, omp_get_max_threads());
+    for (const auto& ref : scene.references) {
+      const nlohmann::json& m = js["metrics"][ref.name];
+      if (m["value"].is_null()) {
+        fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name, ref.probe);
+        continue;
+      }
+      const double v = m["value"], rv = m["reference"];
+      fmt::print(stderr, "monosph: {} = {:.6g} (reference {:.6g}, relative error {:.3e})\n", ref.name, v, rv,
+                 std::abs(v - rv) / std::abs(rv));
+    }
+    fmt::print(stderr, "monosph: ParaView file {}\nmonosph: summary {}\n", (out / (scene.name + ".pvd")).string(),
+               (out / "summary.json").string());
+  }
+  return res;
+}
+
+}  // namespace
+
+RunResult run_scene(const RunOptions& opt) {
+  if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  CheckpointMeta meta;
+  Scene scene;
+  if (!opt.restart.empty()) {
+    // The scene stored in the checkpoint, with any --set overrides on top.
+    int dim = checkpoint_dimension(opt.restart);
+    if (dim == 2) {
+      Particles<2> probe;
+      meta = read_checkpoint<2>(opt.restart, probe);
+    } else {
+      Particles<3> probe;
+      meta = read_checkpoint<3>(opt.restart, probe);
+    }
+    scene = load_scene_text(meta.scene_yaml, opt.overrides, opt.restart);
+  } else {
+    scene = load_scene_file(opt.scene, opt.overrides);
+  }
+  const CheckpointMeta* rm = opt.restart.empty() ? nullptr : &meta;
+  return scene.dimension == 2 ? run_impl<2>(scene, opt, rm) : run_impl<3>(scene, opt, rm);
+}
+
+}  // namespace monosph

@@ -1,0 +1,402 @@
+#include "checkpoint.hpp"
+
+#include <fcntl.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace monosph {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFormat = "monosph-checkpoint";
+constexpr int kVersion = 1;
+
+// Internal failure; turned into an InputError naming the file at the API boundary.
+struct Fail {
+  std::string what;
+};
+
+template <class T>
+T ck(T v, const std::string& what) {
+  if (v < 0) throw Fail{what};
+  return v;
+}
+
+// Owns an HDF5 identifier.
+class Hid {
+ public:
+  Hid(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Hid(Hid&& o) noexcept : id_(std::exchange(o.id_, -1)), close_(o.close_) {}
+  Hid(const Hid&) = delete;
+  Hid& operator=(const Hid&) = delete;
+  ~Hid() {
+    if (id_ >= 0) close_(id_);
+  }
+  operator hid_t() const { return id_; }
+  // Closes now, reporting failure (file close flushes data).
+  void close(const std::string& what) {
+    hid_t id = std::exchange(id_, -1);
+    ck(close_(id), what);
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void quiet_hdf5() {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+// ---- writing helpers ----
+
+void put_attr(hid_t loc, const char* name, hid_t ftype, hid_t mtype, const void* v) {
+  Hid sp(ck(H5Screate(H5S_SCALAR), "dataspace"), H5Sclose);
+  Hid a(ck(H5Acreate2(loc, name, ftype, sp, H5P_DEFAULT, H5P_DEFAULT),
+           std::string("cannot create attribute ") + name),
+        H5Aclose);
+  ck(H5Awrite(a, mtype, v), std::string("cannot write attribute ") + name);
+}
+void put_double(hid_t loc, const char* name, double v) {
+  put_attr(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &v);
+}
+void put_int(hid_t loc, const char* name, std::int64_t v) {
+  put_attr(loc, name, H5T_STD_I64LE, H5T_NATIVE_INT64, &v);
+}
+
+// Fixed-length, null-padded string type of n bytes (at least 1).
+Hid str_type(std::size_t n) {
+  Hid t(ck(H5Tcopy(H5T_C_S1), "string type"), H5Tclose);
+  ck(H5Tset_size(t, std::max<std::size_t>(n, 1)), "string type");
+  ck(H5Tset_strpad(t, H5T_STR_NULLPAD), "string type");
+  return t;
+}
+
+void put_string_attr(hid_t loc, const char* name, const std::string& s) {
+  Hid t = str_type(s.size());
+  std::string buf = s.empty() ? std::string(1, '\0') : s;
+  put_attr(loc, name, t, t, buf.data());
+}
+
+// Array of strings as a 1-D fixed-length string dataset.
+void put_strings(hid_t loc, const char* name, const std::vector<std::string>& v) {
+  std::size_t len = 1;
+  for (const auto& s : v) len = std::max(len, s.size());
+  std::vector<char> buf(v.size() * len, '\0');
+  for (std::size_t i = 0; i < v.size(); ++i) std::copy(v[i].begin(), v[i].end(), &buf[i * len]);
+  Hid t = str_type(len);
+  hsize_t dims[1] = {v.size()};
+  Hid sp(ck(H5Screate_simple(1, dims, nullptr), "dataspace"), H5Sclose);
+  Hid d(ck(H5Dcreate2(loc, name, t, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+           std::string("cannot create dataset ") + name),
+        H5Dclose);
+  if (!v.empty()) ck(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()), "write strings");
+}
+
+void put_field(hid_t group, const Field& f, std::size_t n) {
+  const bool real = f.type == FieldType::Real;
+  hsize_t dims[2] = {n, static_cast<hsize_t>(f.ncomp)};
+  Hid sp(ck(H5Screate_simple(2, dims, nullptr), "dataspace"), H5Sclose);
+  Hid d(ck(H5Dcreate2(group, f.name.c_str(), real ? H5T_IEEE_F64LE : H5T_STD_I64LE, sp, H5P_DEFAULT,
+                      H5P_DEFAULT, H5P_DEFAULT),
+           "cannot create dataset for field '" + f.name + "'"),
+        H5Dclose);
+  if (n > 0) {
+    const void* data = real ? static_cast<const void*>(f.real.data()) : f.ints.data();
+    ck(H5Dwrite(d, real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                data),
+       "cannot write field '" + f.name + "'");
+  }
+  put_int(d, "ncomp", f.ncomp);
+  put_int(d, "output", f.output ? 1 : 0);
+}
+
+// ---- reading helpers ----
+
+void get_attr(hid_t loc, const char* name, hid_t mtype, void* v) {
+  if (H5Aexists(loc, name) <= 0) throw Fail{std::string("missing attribute ") + name};
+  Hid a(ck(H5Aopen(loc, name, H5P_DEFAULT), std::string("cannot open attribute ") + name),
+        H5Aclose);
+  ck(H5Aread(a, mtype, v), std::string("cannot read attribute ") + name);
+}
+double get_double(hid_t loc, const char* name) {
+  double v = 0;
+  get_attr(loc, name, H5T_NATIVE_DOUBLE, &v);
+  return v;
+}
+std::int64_t get_int(hid_t loc, const char* name) {
+  std::int64_t v = 0;
+  get_attr(loc, name, H5T_NATIVE_INT64, &v);
+  return v;
+}
+
+// Strips the null padding of a fixed-length string.
+std::string unpad(const char* p, std::size_t n) {
+  return std::string(p, std::find(p, p + n, '\0'));
+}
+
+std::string get_string_attr(hid_t loc, const char* name) {
+  if (H5Aexists(loc, name) <= 0) throw Fail{std::string("missing attribute ") + name};
+  Hid a(ck(H5Aopen(loc, name, H5P_DEFAULT), std::string("cannot open attribute ") + name),
+        H5Aclose);
+  Hid t(ck(H5Aget_type(a), "attribute type"), H5Tclose);
+  if (H5Tget_class(t) != H5T_STRING || H5Tis_variable_str(t) != 0)
+    throw Fail{std::string("attribute ") + name + " is not a string"};
+  std::vector<char> buf(H5Tget_size(t));
+  ck(H5Aread(a, t, buf.data()), std::string("cannot read attribute ") + name);
+  return unpad(buf.data(), buf.size());
+}
+
+std::vector<std::string> get_strings(hid_t loc, const char* name) {
+  Hid d(ck(H5Dopen2(loc, name, H5P_DEFAULT), std::string("missing dataset ") + name), H5Dclose);
+  Hid t(ck(H5Dget_type(d), "dataset type"), H5Tclose);
+  Hid sp(ck(H5Dget_space(d), "dataspace"), H5Sclose);
+  if (H5Tget_class(t) != H5T_STRING || H5Tis_variable_str(t) != 0 ||
+      H5Sget_simple_extent_ndims(sp) != 1)
+    throw Fail{std::string("dataset ") + name + " is not a string array"};
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(sp, &n, nullptr);
+  const std::size_t len = H5Tget_size(t);
+  std::vector<char> buf(n * len);
+  if (n > 0) ck(H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()), "read strings");
+  std::vector<std::string> v;
+  for (hsize_t i = 0; i < n; ++i) v.push_back(unpad(&buf[i * len], len));
+  return v;
+}
+
+std::vector<double> get_doubles(hid_t loc, const char* name) {
+  Hid d(ck(H5Dopen2(loc, name, H5P_DEFAULT), std::string("missing dataset ") + name), H5Dclose);
+  Hid sp(ck(H5Dget_space(d), "dataspace"), H5Sclose);
+  hssize_t n = ck(H5Sget_simple_extent_npoints(sp), "dataspace");
+  std::vector<double> v(n);
+  if (n > 0)
+    ck(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()),
+       std::string("cannot read ") + name);
+  return v;
+}
+
+// Reads /fields/<name>; n is the particle count (set by the first field, then checked).
+Field get_field(hid_t group, const std::string& name, std::size_t& n, bool first) {
+  Hid d(ck(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "cannot open field '" + name + "'"),
+        H5Dclose);
+  Hid t(ck(H5Dget_type(d), "dataset type"), H5Tclose);
+  Hid sp(ck(H5Dget_space(d), "dataspace"), H5Sclose);
+  Field f;
+  f.name = name;
+  const H5T_class_t cls = H5Tget_class(t);
+  if (cls != H5T_FLOAT && cls != H5T_INTEGER) throw Fail{"field '" + name + "' has a bad type"};
+  f.type = cls == H5T_FLOAT ? FieldType::Real : FieldType::Int;
+  f.ncomp = static_cast<int>(get_int(d, "ncomp"));
+  f.output = get_int(d, "output") != 0;
+  hsize_t dims[2] = {0, 0};
+  if (H5Sget_simple_extent_ndims(sp) != 2 || H5Sget_simple_extent_dims(sp, dims, nullptr) < 0 ||
+      dims[1] != static_cast<hsize_t>(f.ncomp) || f.ncomp < 1)
+    throw Fail{"field '" + name + "' has a bad shape"};
+  if (first) n = dims[0];
+  if (dims[0] != n) throw Fail{"field '" + name + "' has a different particle count"};
+  const std::size_t count = n * f.ncomp;
+  void* data;
+  if (f.type == FieldType::Real) {
+    f.real.resize(count);
+    data = f.real.data();
+  } else {
+    f.ints.resize(count);
+    data = f.ints.data();
+  }
+  if (count > 0)
+    ck(H5Dread(d, f.type == FieldType::Real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, H5S_ALL,
+               H5S_ALL, H5P_DEFAULT, data),
+       "cannot read field '" + name + "'");
+  return f;
+}
+
+void write_file(const fs::path& tmp, const std::vector<Field>& fields, std::size_t n,
+                const CheckpointMeta& meta, std::int64_t next_id, int dim) {
+  Hid file(
+      ck(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "cannot create the file"),
+      H5Fclose);
+  put_string_attr(file, "format", kFormat);
+  put_int(file, "version", kVersion);
+
+  Hid m(ck(H5Gcreate2(file, "meta", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "group meta"),
+        H5Gclose);
+  put_double(m, "time", meta.time);
+  put_int(m, "step", meta.step);
+  put_double(m, "dt", meta.dt);
+  put_int(m, "next_id", next_id);
+  put_int(m, "dimension", dim);
+  put_strings(m, "scene_yaml", {meta.scene_yaml});
+  std::vector<std::string> keys;
+  std::vector<double> vals;
+  for (const auto& [k, v] : meta.scalars) {
+    keys.push_back(k);
+    vals.push_back(v);
+  }
+  put_strings(m, "scalar_names", keys);
+  hsize_t ns[1] = {vals.size()};
+  Hid sp(ck(H5Screate_simple(1, ns, nullptr), "dataspace"), H5Sclose);
+  Hid d(
+      ck(H5Dcreate2(m, "scalar_values", H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+         "dataset scalar_values"),
+      H5Dclose);
+  if (!vals.empty())
+    ck(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, vals.data()), "scalars");
+
+  // Track creation order so fields come back in the order they were registered.
+  Hid gcpl(ck(H5Pcreate(H5P_GROUP_CREATE), "property list"), H5Pclose);
+  ck(H5Pset_link_creation_order(gcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "plist");
+  Hid g(ck(H5Gcreate2(file, "fields", H5P_DEFAULT, gcpl, H5P_DEFAULT), "group fields"), H5Gclose);
+  for (const auto& f : fields) {
+    if (f.name.empty() || f.name.find('/') != std::string::npos || f.name == ".")
+      throw Fail{"field name '" + f.name + "' cannot be stored"};
+    put_field(g, f, n);
+  }
+  g.close("close group");
+  file.close("cannot close the file");
+}
+
+// Flushes file contents to disk.
+void sync_file(const fs::path& path) {
+  int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+template <int D>
+void write_checkpoint(const fs::path& file, const Particles<D>& p, const CheckpointMeta& meta) {
+  quiet_hdf5();
+  fs::path tmp = file;
+  tmp += ".tmp";
+  try {
+    write_file(tmp, p.fields(), p.size(), meta, std::max(meta.next_id, p.next_id()), D);
+    sync_file(tmp);
+    std::error_code ec;
+    fs::rename(tmp, file, ec);
+    if (ec) throw Fail{ec.message()};
+  } catch (const Fail& e) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw InputError("checkpoint: cannot write " + file.string() + ": " + e.what);
+  }
+}
+
+namespace {
+
+std::string where(const fs::path& file) {
+  return "checkpoint " + file.string() + ": ";
+}
+
+// Opens a monosph checkpoint read-only; throws InputError or Fail otherwise.
+Hid open_checkpoint(const fs::path& file) {
+  quiet_hdf5();
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw InputError(where(file) + "no such file");
+  if (!fs::is_regular_file(file, ec)) throw InputError(where(file) + "not a regular file");
+  if (H5Fis_hdf5(file.c_str()) <= 0) throw InputError(where(file) + "not a monosph checkpoint");
+  Hid f(ck(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "cannot open the file"), H5Fclose);
+  std::string fmt;
+  try {
+    fmt = get_string_attr(f, "format");
+  } catch (const Fail&) {
+  }
+  if (fmt != kFormat) throw Fail{"not a monosph checkpoint"};
+  if (get_int(f, "version") != kVersion) throw Fail{"unsupported checkpoint version"};
+  return f;
+}
+
+int dimension_of(hid_t f) {
+  Hid m(ck(H5Gopen2(f, "meta", H5P_DEFAULT), "missing group meta"), H5Gclose);
+  const std::int64_t dim = get_int(m, "dimension");
+  if (dim != 2 && dim != 3) throw Fail{"bad dimension " + std::to_string(dim)};
+  return static_cast<int>(dim);
+}
+
+}  // namespace
+
+int checkpoint_dimension(const fs::path& file) {
+  try {
+    Hid f = open_checkpoint(file);
+    return dimension_of(f);
+  } catch (const Fail& e) {
+    throw InputError(where(file) + e.what);
+  }
+}
+
+template <int D>
+CheckpointMeta read_checkpoint(const fs::path& file, Particles<D>& p) {
+  CheckpointMeta meta;
+  std::vector<Field> fields;
+  std::size_t n = 0;
+  try {
+    Hid f = open_checkpoint(file);
+    const int dim = dimension_of(f);
+    if (dim != D)
+      throw Fail{"written by a " + std::to_string(dim) + "D run, cannot restart a " +
+                 std::to_string(D) + "D run"};
+    Hid m(ck(H5Gopen2(f, "meta", H5P_DEFAULT), "missing group meta"), H5Gclose);
+    meta.time = get_double(m, "time");
+    meta.step = static_cast<long>(get_int(m, "step"));
+    meta.dt = get_double(m, "dt");
+    meta.next_id = get_int(m, "next_id");
+    auto yaml = get_strings(m, "scene_yaml");
+    if (yaml.size() != 1) throw Fail{"bad scene_yaml"};
+    meta.scene_yaml = yaml[0];
+    auto keys = get_strings(m, "scalar_names");
+    auto vals = get_doubles(m, "scalar_values");
+    if (keys.size() != vals.size()) throw Fail{"bad scalars"};
+    for (std::size_t i = 0; i < keys.size(); ++i) meta.scalars[keys[i]] = vals[i];
+
+    Hid g(ck(H5Gopen2(f, "fields", H5P_DEFAULT), "missing group fields"), H5Gclose);
+    H5G_info_t info;
+    ck(H5Gget_info(g, &info), "group fields");
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      ssize_t len = ck(
+          H5Lget_name_by_idx(g, ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT),
+          "field names");
+      std::string name(len + 1, '\0');
+      ck(H5Lget_name_by_idx(g, ".", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name.data(), len + 1,
+                            H5P_DEFAULT),
+         "field names");
+      name.resize(len);
+      fields.push_back(get_field(g, name, n, i == 0));
+    }
+    auto pos = std::find_if(fields.begin(), fields.end(),
+                            [](const Field& x) { return x.name == "position"; });
+    if (pos == fields.end() || pos->ncomp != D || pos->type != FieldType::Real)
+      throw Fail{"missing or bad position field"};
+    // Check shapes against fields p already has before changing anything.
+    for (const auto& x : fields) {
+      int k = p.find(x.name);
+      if (k >= 0 && (p.field(k).ncomp != x.ncomp || p.field(k).type != x.type))
+        throw Fail{"field '" + x.name + "' does not match this build"};
+    }
+  } catch (const Fail& e) {
+    throw InputError(where(file) + e.what);
+  }
+
+  p.resize(n);
+  for (auto& x : fields) {
+    Field& dst = p.field(p.add_field(x.name, x.ncomp, x.type, x.output));
+    dst.output = x.output;
+    dst.real = std::move(x.real);
+    dst.ints = std::move(x.ints);
+  }
+  p.set_next_id(meta.next_id);
+  return meta;
+}
+
+template void write_checkpoint<2>(const fs::path&, const Particles<2>&, const CheckpointMeta&);
+template void write_checkpoint<3>(const fs::path&, const Particles<3>&, const CheckpointMeta&);
+template CheckpointMeta read_checkpoint<2>(const fs::path&, Particles<2>&);
+template CheckpointMeta read_checkpoint<3>(const fs::path&, Particles<3>&);
+
+}  // namespace monosph

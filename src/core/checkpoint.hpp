@@ -1,0 +1,37 @@
+#pragma once
+// Checkpoints: every particle field plus run metadata in one HDF5 file, for exact restarts.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "particles.hpp"
+
+namespace monosph {
+
+struct CheckpointMeta {
+  double time = 0;
+  long step = 0;
+  double dt = 0;
+  std::string scene_yaml;
+  std::int64_t next_id = 0;
+  std::map<std::string, double> scalars;  // module state (rigid bodies, counters...)
+};
+
+// Writes file atomically (temporary + rename). Stores every field of p as /fields/<name>
+// (n x ncomp, double or int64, attributes ncomp and output) and meta under /meta. The next_id
+// stored is max(meta.next_id, p.next_id()). Throws InputError if the file cannot be written.
+template <int D>
+void write_checkpoint(const std::filesystem::path& file, const Particles<D>& p,
+                      const CheckpointMeta& meta);
+
+// Restores every field of p exactly (registering missing fields, resizing p, setting next_id)
+// and returns the metadata. Throws InputError naming the file if it is missing, not a monosph
+// checkpoint, damaged, or written with another dimension. On error p is left unchanged.
+template <int D>
+CheckpointMeta read_checkpoint(const std::filesystem::path& file, Particles<D>& p);
+
+// The dimension (2 or 3) a checkpoint was written with; same errors as read_checkpoint.
+int checkpoint_dimension(const std::filesystem::path& file);
+
+}  // namespace monosph

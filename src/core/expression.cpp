@@ -1,0 +1,53 @@
+#include "expression.hpp"
+
+#include <muParser.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "types.hpp"
+
+namespace monosph {
+
+struct Expression::Impl {
+  mu::Parser parser;
+  double x = 0, y = 0, z = 0, t = 0;
+  bool uses_t = false;
+  std::string text;
+};
+
+Expression::Expression(const std::string& text, const std::string& where)
+    : impl_(std::make_unique<Impl>()) {
+  auto& p = impl_->parser;
+  impl_->text = text;
+  try {
+    p.DefineConst("pi", std::numbers::pi);
+    p.DefineConst("e", std::numbers::e);
+    p.DefineVar("x", &impl_->x);
+    p.DefineVar("y", &impl_->y);
+    p.DefineVar("z", &impl_->z);
+    p.DefineVar("t", &impl_->t);
+    p.SetExpr(text);
+    p.Eval();  // forces parsing; reports syntax errors now
+    impl_->uses_t = p.GetUsedVar().count("t") > 0;
+  } catch (mu::Parser::exception_type& e) {
+    throw InputError(where + ": invalid expression '" + text + "': " + e.GetMsg());
+  }
+}
+
+Expression::Expression() = default;
+Expression::Expression(Expression&&) noexcept = default;
+Expression& Expression::operator=(Expression&&) noexcept = default;
+Expression::~Expression() = default;
+
+double Expression::operator()(double x, double y, double z, double t) const {
+  impl_->x = x;
+  impl_->y = y;
+  impl_->z = z;
+  impl_->t = t;
+  return impl_->parser.Eval();
+}
+
+bool Expression::depends_on_time() const { return impl_ && impl_->uses_t; }
+
+}  // namespace monosph

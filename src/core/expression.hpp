@@ -1,0 +1,29 @@
+#pragma once
+// A user expression in x, y, z and t (muparser), e.g. "1000*(1+1e-3*cos(2*pi*x/0.1))".
+#include <memory>
+#include <string>
+
+namespace monosph {
+
+class Expression {
+ public:
+  Expression();
+  // Throws InputError "<where>: invalid expression '<text>': <reason>".
+  Expression(const std::string& text, const std::string& where);
+  Expression(const Expression&) = delete;
+  Expression& operator=(const Expression&) = delete;
+  Expression(Expression&&) noexcept;
+  Expression& operator=(Expression&&) noexcept;
+  ~Expression();
+
+  // Not thread-safe: evaluate from one thread.
+  double operator()(double x, double y = 0, double z = 0, double t = 0) const;
+  bool empty() const { return !impl_; }
+  bool depends_on_time() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace monosph

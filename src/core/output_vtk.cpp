@@ -1,0 +1,270 @@
+#include "output_vtk.hpp"
+
+#include <unistd.h>
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <system_error>
+
+namespace monosph {
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void cannot_write(const fs::path& dir, const std::string& reason) {
+  throw InputError("output: cannot write to " + dir.string() + ": " + reason);
+}
+
+// vtkErrorCode::GetStringFromErrorCode lives in CommonMisc, which we do not link.
+std::string vtk_error(unsigned long code) {
+  switch (code) {
+    case vtkErrorCode::CannotOpenFileError:
+      return "cannot open file";
+    case vtkErrorCode::OutOfDiskSpaceError:
+      return "out of disk space";
+    default:
+      if (code > 0 && code < vtkErrorCode::FirstVTKErrorCode)
+        return std::strerror(static_cast<int>(code));
+      return "VTK error " + std::to_string(code);
+  }
+}
+
+// Shortest text that reads back to the same double.
+std::string fmt_double(double x) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof(buf), x);
+  return std::string(buf, r.ptr);
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string r;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        r += "&amp;";
+        break;
+      case '<':
+        r += "&lt;";
+        break;
+      case '>':
+        r += "&gt;";
+        break;
+      case '"':
+        r += "&quot;";
+        break;
+      default:
+        r += c;
+    }
+  }
+  return r;
+}
+
+std::string xml_unescape(std::string s) {
+  const std::pair<const char*, char> ents[] = {
+      {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}, {"&amp;", '&'}};
+  for (auto [e, c] : ents) {
+    std::size_t n = std::strlen(e);
+    for (std::size_t i = s.find(e); i != std::string::npos; i = s.find(e, i + 1))
+      s.replace(i, n, 1, c);
+  }
+  return s;
+}
+
+// Output layout of a field with nc components: out component j takes input component map[j]
+// (-1 = zero). D-vectors pad to 3; DxD and 3x3 column-major tensors become 3x3 row-major.
+template <int D>
+std::vector<int> layout(int nc) {
+  std::vector<int> m;
+  if (nc == D) {
+    for (int j = 0; j < 3; ++j) m.push_back(j < D ? j : -1);
+  } else if (nc == D * D) {
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m.push_back(r < D && c < D ? c * D + r : -1);
+  } else if (nc == 9) {
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m.push_back(c * 3 + r);
+  } else {
+    for (int j = 0; j < nc; ++j) m.push_back(j);
+  }
+  return m;
+}
+
+template <class Arr, class T>
+void fill(Arr* a, const std::vector<T>& src, int nc, std::size_t n, const std::vector<int>& map) {
+  const int no = static_cast<int>(map.size());
+  a->SetNumberOfComponents(no);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  using Out = typename Arr::ValueType;  // long long for vtkTypeInt64Array
+  Out* dst = a->GetPointer(0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int j = 0; j < no; ++j)
+      dst[i * no + j] = map[j] < 0 ? Out(0) : static_cast<Out>(src[i * nc + map[j]]);
+}
+
+template <int D>
+void add_array(vtkPointData* pd, const Field& f, std::size_t n) {
+  auto map = layout<D>(f.ncomp);
+  if (f.type == FieldType::Real) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(f.name.c_str());
+    fill(a.GetPointer(), f.real, f.ncomp, n, map);
+    pd->AddArray(a);
+  } else {
+    vtkNew<vtkTypeInt64Array> a;
+    a->SetName(f.name.c_str());
+    fill(a.GetPointer(), f.ints, f.ncomp, n, map);
+    pd->AddArray(a);
+  }
+}
+
+}  // namespace
+
+template <int D>
+VtkSeries<D>::VtkSeries(fs::path dir, std::string basename)
+    : dir_(std::move(dir)), basename_(std::move(basename)) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) cannot_write(dir_, ec.message());
+  if (!fs::is_directory(dir_, ec)) cannot_write(dir_, "not a directory");
+  // Probe: really create a file there.
+  fs::path probe = dir_ / (".monosph_probe_" + std::to_string(::getpid()));
+  std::FILE* fp = std::fopen(probe.c_str(), "w");
+  if (!fp) cannot_write(dir_, std::strerror(errno));
+  std::fclose(fp);
+  fs::remove(probe, ec);
+}
+
+template <int D>
+fs::path VtkSeries<D>::write(const Particles<D>& p, double time, long step,
+                             const std::vector<std::string>& extra_fields) {
+  const std::size_t n = p.size();
+  // Fields to write: output ones, then extras (checked first, so nothing is half written).
+  std::vector<int> ks;
+  for (std::size_t k = 0; k < p.fields().size(); ++k)
+    if (p.field(static_cast<int>(k)).output) ks.push_back(static_cast<int>(k));
+  for (const auto& name : extra_fields) {
+    int k = p.find(name);
+    if (k < 0) throw InputError("output: unknown particle field '" + name + "'");
+    if (std::find(ks.begin(), ks.end(), k) == ks.end()) ks.push_back(k);
+  }
+
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  {
+    vtkNew<vtkDoubleArray> xyz;
+    fill(xyz.GetPointer(), p.field("position").real, D, n, layout<D>(D));
+    pts->SetData(xyz);
+  }
+  grid->SetPoints(pts);
+  vtkNew<vtkIdTypeArray> conn;
+  conn->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  for (std::size_t i = 0; i < n; ++i) conn->SetValue(static_cast<vtkIdType>(i), i);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(1, conn);
+  grid->SetCells(VTK_VERTEX, cells);
+
+  for (int k : ks) add_array<D>(grid->GetPointData(), p.field(k), n);
+  // ParaView picks up "TimeValue" field data as the frame time.
+  vtkNew<vtkDoubleArray> tv;
+  tv->SetName("TimeValue");
+  tv->InsertNextValue(time);
+  grid->GetFieldData()->AddArray(tv);
+  vtkNew<vtkTypeInt64Array> sv;
+  sv->SetName("Step");
+  sv->InsertNextValue(step);
+  grid->GetFieldData()->AddArray(sv);
+
+  char num[32];
+  std::snprintf(num, sizeof(num), "%06ld", step);
+  const std::string file = basename_ + "_" + num + ".vtu";
+  const fs::path path = dir_ / file;
+  vtkNew<vtkXMLUnstructuredGridWriter> w;
+  w->SetFileName(path.c_str());
+  w->SetInputData(grid);
+  w->SetDataModeToAppended();
+  w->EncodeAppendedDataOff();
+  w->SetCompressorTypeToZLib();
+  w->SetHeaderTypeToUInt64();
+  if (!w->Write() || w->GetErrorCode() != vtkErrorCode::NoError)
+    cannot_write(dir_, vtk_error(w->GetErrorCode()));
+
+  // A frame replaces any entry for the same file or a later time (rewrite after a restart).
+  std::erase_if(frames_, [&](const Frame& f) { return f.file == file || f.time >= time; });
+  frames_.push_back({time, file});
+  write_pvd();
+  return path;
+}
+
+template <int D>
+void VtkSeries<D>::write_pvd() const {
+  std::ostringstream s;
+  s << "<?xml version=\"1.0\"?>\n"
+    << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+    << "  <Collection>\n";
+  for (const auto& f : frames_)
+    s << "    <DataSet timestep=\"" << fmt_double(f.time) << "\" group=\"\" part=\"0\" file=\""
+      << xml_escape(f.file) << "\"/>\n";
+  s << "  </Collection>\n</VTKFile>\n";
+  // Write to a temporary and rename, so a reader never sees half a file.
+  const fs::path final = pvd_path();
+  fs::path tmp = final;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << s.str();
+    out.close();
+    if (!out) cannot_write(dir_, "cannot write " + tmp.filename().string());
+  }
+  std::error_code ec;
+  fs::rename(tmp, final, ec);
+  if (ec) cannot_write(dir_, ec.message());
+}
+
+template <int D>
+int VtkSeries<D>::restore_frames(double restart_time) {
+  frames_.clear();
+  std::ifstream in(pvd_path());
+  if (!in) return 0;
+  std::stringstream buf;
+  buf << in.rdbuf();
+  const std::string text = buf.str();
+  static const std::regex tag(R"re(<DataSet\b[^>]*>)re");
+  static const std::regex ts(R"re(\btimestep\s*=\s*"([^"]*)")re");
+  static const std::regex fl(R"re(\bfile\s*=\s*"([^"]*)")re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), tag); it != std::sregex_iterator();
+       ++it) {
+    const std::string t = it->str();
+    std::smatch mt, mf;
+    if (!std::regex_search(t, mt, ts) || !std::regex_search(t, mf, fl)) continue;
+    const std::string tstr = mt[1].str();
+    double time = 0;
+    auto r = std::from_chars(tstr.data(), tstr.data() + tstr.size(), time);
+    if (r.ec != std::errc()) continue;
+    if (time <= restart_time) frames_.push_back({time, xml_unescape(mf[1].str())});
+  }
+  write_pvd();
+  return frames();
+}
+
+template class VtkSeries<2>;
+template class VtkSeries<3>;
+
+}  // namespace monosph

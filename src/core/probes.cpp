@@ -1,0 +1,166 @@
+#include "probes.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <numbers>
+
+#include "expression.hpp"
+
+namespace monosph {
+
+template <int D>
+struct Probes<D>::Item {
+  ProbeSpec spec;
+  int field = -1, body = -1, bc = -1;
+  Expression weight;
+};
+
+template <int D>
+Probes<D>::Probes(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const char* ax = "xyz";
+  for (std::size_t k = 0; k < sim.scene().probes.size(); ++k) {
+    const ProbeSpec& s = sim.scene().probes[k];
+    auto it = std::make_unique<Item>();
+    it->spec = s;
+    const std::string where = "probes.list[" + std::to_string(k) + "]";
+    if (!s.field.empty()) {
+      it->field = p.find(s.field);
+      if (it->field < 0) {
+        std::string names;
+        for (const auto& f : p.fields()) names += (names.empty() ? "" : ", ") + f.name;
+        throw InputError(where + ".field: no particle field '" + s.field + "' in this scene (available: " +
+                         names + ")");
+      }
+      const int nc = p.field(it->field).ncomp;
+      if (nc > 1 && (s.component < 0 || s.component >= nc))
+        throw InputError(where + ".field: '" + s.field + "' has " + std::to_string(nc) +
+                         " components; name one, e.g. " + s.field + ".x");
+    }
+    if (s.type == "reaction_force") {
+      for (std::size_t b = 0; b < sim.boundaries().size(); ++b)
+        if (sim.boundaries()[b].name == s.body) it->bc = static_cast<int>(b);
+    } else if (!s.body.empty()) {
+      for (std::size_t b = 0; b < sim.bodies().size(); ++b)
+        if (sim.bodies()[b].name == s.body) it->body = static_cast<int>(b);
+    }
+    if (!s.weight_expr.empty()) it->weight = Expression(s.weight_expr, where + ".weight");
+    if (s.type == "momentum" || s.type == "reaction_force") {
+      for (int a = 0; a < D; ++a) columns_.push_back(s.name + "_" + ax[a]);
+    } else {
+      columns_.push_back(s.name);
+    }
+    items_.push_back(std::move(it));
+  }
+}
+
+template <int D>
+Probes<D>::~Probes() = default;
+
+template <int D>
+std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto v = p.v();
+  auto m = p.m();
+  auto rho = p.rho();
+  auto bd = p.body();
+  const std::size_t n = p.size();
+  std::vector<double> out;
+  for (auto& it : items_) {
+    const auto& s = it->spec;
+    auto in_body = [&](std::size_t i) { return it->body < 0 || bd[i] == it->body; };
+    auto value = [&](std::size_t i) {
+      const Field& f = p.field(it->field);
+      const int c = f.ncomp > 1 ? s.component : 0;
+      return f.type == FieldType::Real ? f.real[i * f.ncomp + c]
+                                       : static_cast<double>(f.ints[i * f.ncomp + c]);
+    };
+    auto weight = [&](std::size_t i) {
+      if (it->weight.empty()) return 1.0;
+      return it->weight(x[i][0], x[i][1], D == 3 ? x[i][D - 1] : 0.0, sim.time());
+    };
+    if (s.type == "kinetic_energy") {
+      double e = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) e += 0.5 * m[i] * v[i].squaredNorm() * weight(i);
+      out.push_back(e);
+    } else if (s.type == "total_mass") {
+      double e = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) e += m[i];
+      out.push_back(e);
+    } else if (s.type == "momentum") {
+      Vec<D> q = Vec<D>::Zero();
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) q += m[i] * v[i];
+      for (int a = 0; a < D; ++a) out.push_back(q[a]);
+    } else if (s.type == "abs_momentum") {
+      double e = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) e += m[i] * v[i].norm();
+      out.push_back(e);
+    } else if (s.type == "max_speed") {
+      double e = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) e = std::max(e, v[i].norm());
+      out.push_back(e);
+    } else if (s.type == "min_distance") {
+      out.push_back(sim.min_distance() / sim.dp());
+    } else if (s.type == "integral" || s.type == "mean") {
+      double sum = 0, vol = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i)) continue;
+        const double vi = m[i] / rho[i];
+        sum += vi * value(i) * weight(i);
+        vol += vi;
+      }
+      out.push_back(s.type == "mean" ? sum / vol : sum);
+    } else if (s.type == "value_at") {
+      double best = std::numeric_limits<double>::infinity(), val = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i)) continue;
+        double d2 = 0;
+        for (int a = 0; a < D; ++a) d2 += (x[i][a] - s.point[a]) * (x[i][a] - s.point[a]);
+        if (d2 < best) best = d2, val = value(i);
+      }
+      out.push_back(val);
+    } else if (s.type == "reaction_force") {
+      for (int a = 0; a < D; ++a) out.push_back(sim.reactions()[it->bc][a]);
+    }
+  }
+  return out;
+}
+
+double measure_series(const std::string& measure, const std::vector<double>& t,
+                      const std::vector<double>& y, double start) {
+  std::vector<double> tt, yy;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] >= start) tt.push_back(t[k]), yy.push_back(y[k]);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (tt.empty()) return nan;
+  if (measure == "final") return yy.back();
+  if (measure == "max") return *std::max_element(yy.begin(), yy.end());
+  if (measure == "min") return *std::min_element(yy.begin(), yy.end());
+  const double mean = std::accumulate(yy.begin(), yy.end(), 0.0) / yy.size();
+  if (measure == "mean") return mean;
+  // frequency / period from the upward zero crossings of y - mean (linear interpolation);
+  // same-direction crossings make the estimate insensitive to an offset in the mean.
+  std::vector<double> cross;
+  for (std::size_t k = 1; k < yy.size(); ++k) {
+    const double a = yy[k - 1] - mean, b = yy[k] - mean;
+    if (a < 0 && b >= 0) cross.push_back(tt[k - 1] + (tt[k] - tt[k - 1]) * a / (a - b));
+  }
+  if (cross.size() < 2) return nan;
+  const double f = (cross.size() - 1) / (cross.back() - cross.front());
+  if (measure == "frequency") return f;
+  if (measure == "angular_frequency") return 2 * std::numbers::pi * f;
+  if (measure == "period") return 1.0 / f;
+  return nan;
+}
+
+template class Probes<2>;
+template class Probes<3>;
+
+}  // namespace monosph

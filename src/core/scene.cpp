@@ -1,0 +1,480 @@
+#include "scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "expression.hpp"
+#include "scene_reader.hpp"
+
+namespace monosph {
+
+double Material::sound_speed() const { return std::sqrt(bulk_modulus / density); }
+double Material::wave_speed() const {
+  return std::sqrt((bulk_modulus + 4.0 * shear_modulus / 3.0) / density);
+}
+
+int Scene::material_index(const std::string& n) const {
+  for (std::size_t k = 0; k < materials.size(); ++k)
+    if (materials[k].name == n) return static_cast<int>(k);
+  return -1;
+}
+
+namespace {
+
+const std::vector<std::string> kModules = {};  // physics modules available to scenes (steps 2-5)
+
+void check_expression(const std::string& text, const std::string& path) { Expression e(text, path); }
+
+std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim) {
+  auto n = r.node(key);
+  if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+    scene_error(r.at(key), "expected a list of " + std::to_string(dim) + " expressions");
+  std::vector<std::string> out;
+  for (int a = 0; a < dim; ++a) {
+    std::string p = r.at(key) + "[" + std::to_string(a) + "]";
+    out.push_back(as_text(n[a], p));
+    check_expression(out.back(), p);
+  }
+  return out;
+}
+
+Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
+  static const std::vector<std::string> kinds = {"box",      "circle",  "sphere", "ring",
+                                                 "hollow_sphere", "cylinder", "polygon",
+                                                 "union",    "difference"};
+  if (!node.IsMap() || node.size() != 1)
+    scene_error(path, "expected a map with exactly one shape key (box, circle, sphere, ring, "
+                      "hollow_sphere, cylinder, polygon, union, difference)");
+  std::string kind = node.begin()->first.as<std::string>();
+  YAML::Node body = node.begin()->second;
+  std::string p = path + "." + kind;
+  Shape s;
+  auto list_of_shapes = [&](Shape::Kind k) {
+    if (!body.IsSequence() || body.size() < 1) scene_error(p, "expected a list of shapes");
+    s.kind = k;
+    for (std::size_t i = 0; i < body.size(); ++i)
+      s.parts.push_back(read_shape(body[i], p + "[" + std::to_string(i) + "]", dim));
+    if (k == Shape::Kind::Difference && s.parts.size() < 2)
+      scene_error(p, "expected a base shape followed by at least one shape to subtract");
+  };
+  if (kind == "box") {
+    MapReader r(body, p);
+    s.kind = Shape::Kind::Box;
+    s.a = r.vector("min", dim);
+    s.b = r.vector("max", dim);
+    r.finish();
+    for (int k = 0; k < dim; ++k)
+      if (!(s.b[k] > s.a[k])) scene_error(p + ".max", "must be greater than min in every axis");
+  } else if ((kind == "circle" && dim == 2) || (kind == "sphere" && dim == 3)) {
+    MapReader r(body, p);
+    s.kind = Shape::Kind::Sphere;
+    s.center = r.vector("center", dim);
+    s.r0 = r.positive("radius");
+    r.finish();
+  } else if ((kind == "ring" && dim == 2) || (kind == "hollow_sphere" && dim == 3)) {
+    MapReader r(body, p);
+    s.kind = Shape::Kind::Ring;
+    s.center = r.vector("center", dim);
+    s.r0 = r.positive("inner");
+    s.r1 = r.positive("outer");
+    r.finish();
+    if (!(s.r1 > s.r0)) scene_error(p + ".outer", "must be greater than inner");
+  } else if (kind == "cylinder" && dim == 3) {
+    MapReader r(body, p);
+    s.kind = Shape::Kind::Cylinder;
+    s.a = r.vector("start", 3);
+    s.b = r.vector("end", 3);
+    s.r0 = r.positive("radius");
+    r.finish();
+  } else if (kind == "polygon" && dim == 2) {
+    MapReader r(body, p);
+    s.kind = Shape::Kind::Polygon;
+    auto v = r.node("vertices");
+    if (!v.IsSequence() || v.size() < 3) scene_error(p + ".vertices", "expected at least 3 points");
+    for (std::size_t i = 0; i < v.size(); ++i)
+      s.vertices.push_back(as_vector(v[i], p + ".vertices[" + std::to_string(i) + "]", 2));
+    r.finish();
+  } else if (kind == "union") {
+    list_of_shapes(Shape::Kind::Union);
+  } else if (kind == "difference") {
+    list_of_shapes(Shape::Kind::Difference);
+  } else {
+    std::string hint = closest_word(kind, kinds);
+    scene_error(p, "unknown shape in " + std::to_string(dim) +
+                       "D (allowed: box, union, difference, " +
+                       (dim == 2 ? "circle, ring, polygon)" : "sphere, hollow_sphere, cylinder)") +
+                       (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+  }
+  return s;
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& origin) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(origin + ": invalid YAML at line " + std::to_string(e.mark.line + 1) +
+                     ", column " + std::to_string(e.mark.column + 1) + ": " + e.msg);
+  }
+}
+
+void apply_override(YAML::Node& root, const std::string& item) {
+  auto eq = item.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + item + ": expected key=value, e.g. --set end_time=0.1");
+  std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  YAML::Node value_node;
+  try {
+    value_node = YAML::Load(value);
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set " + item + ": invalid value: " + e.msg);
+  }
+  // Walk with explicit node copies (yaml-cpp nodes are handles).
+  std::vector<YAML::Node> chain{root};
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node cur = chain.back();
+    const std::string& k = parts[i];
+    if (cur.IsSequence()) {
+      std::size_t idx;
+      try {
+        idx = std::stoul(k);
+      } catch (...) {
+        throw InputError("--set " + key + ": '" + k + "' must be a list index");
+      }
+      if (idx >= cur.size()) throw InputError("--set " + key + ": index " + k + " out of range");
+      chain.push_back(cur[idx]);
+    } else {
+      if (!cur[k].IsDefined() || cur[k].IsNull()) cur[k] = YAML::Node(YAML::NodeType::Map);
+      chain.push_back(cur[k]);
+    }
+  }
+  YAML::Node last = chain.back();
+  const std::string& k = parts.back();
+  if (last.IsSequence()) {
+    std::size_t idx = std::stoul(k);
+    if (idx >= last.size()) throw InputError("--set " + key + ": index " + k + " out of range");
+    last[idx] = value_node;
+  } else {
+    last[k] = value_node;
+  }
+}
+
+Material read_material(const std::string& name, const YAML::Node& n, const std::string& path) {
+  MapReader r(n, path);
+  Material m;
+  m.name = name;
+  m.density = r.positive("density");
+  if (r.has("bulk_modulus") && r.has("sound_speed"))
+    scene_error(path, "give either bulk_modulus or sound_speed, not both");
+  if (r.has("sound_speed")) {
+    double c = r.positive("sound_speed");
+    m.bulk_modulus = m.density * c * c;
+    r.optional("bulk_modulus");
+  } else {
+    m.bulk_modulus = r.positive("bulk_modulus");
+    r.optional("sound_speed");
+  }
+  m.shear_modulus = r.non_negative("shear_modulus", 0.0);
+  r.finish();
+  return m;
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::vector<std::string>& overrides,
+                      const std::string& origin) {
+  YAML::Node root = parse_yaml(text, origin);
+  if (!root.IsMap()) throw InputError(origin + ": a scene must be a YAML map of keys");
+  for (const auto& o : overrides) apply_override(root, o);
+  Scene s;
+  {
+    YAML::Emitter out;
+    out << root;
+    s.yaml = out.c_str();
+  }
+  MapReader r(root, "");
+  s.name = r.text("name", "scene");
+  s.description = r.text("description", "");
+  s.dimension = r.integer("dimension", 2);
+  if (s.dimension != 2 && s.dimension != 3)
+    scene_error("dimension", "must be 2 or 3, got " + std::to_string(s.dimension));
+  const int dim = s.dimension;
+  s.dp = r.positive("dp");
+
+  if (r.has("kernel")) {
+    auto kn = r.node("kernel");
+    if (kn.IsScalar()) {
+      s.kernel = kernel_from_name(as_text(kn, "kernel"));
+    } else {
+      MapReader k(kn, "kernel");
+      s.kernel = kernel_from_name(k.choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"},
+                                           "cubic_spline"));
+      s.h_factor = k.positive("h_factor", 1.3);
+      k.finish();
+    }
+  }
+
+  {
+    MapReader d(r.node("domain"), "domain");
+    s.domain_min = d.vector("min", dim);
+    s.domain_max = d.vector("max", dim);
+    for (int a = 0; a < dim; ++a)
+      if (!(s.domain_max[a] > s.domain_min[a]))
+        scene_error("domain.max", "must be greater than domain.min in every axis");
+    s.periodic.assign(dim, false);
+    if (d.has("periodic")) {
+      for (const auto& ax : d.strings("periodic")) {
+        int a = ax == "x" ? 0 : ax == "y" ? 1 : ax == "z" ? 2 : -1;
+        if (a < 0 || a >= dim)
+          scene_error("domain.periodic", "'" + ax + "' is not an axis of a " + std::to_string(dim) +
+                                             "D scene (allowed: x, y" + (dim == 3 ? ", z)" : ")"));
+        s.periodic[a] = true;
+      }
+    } else {
+      d.optional("periodic");
+    }
+    d.finish();
+  }
+
+  if (r.has("neighbours")) {
+    MapReader nb(r.node("neighbours"), "neighbours");
+    s.skin_factor = nb.positive("skin", 0.3);
+    s.reorder_every = nb.integer("reorder_every", 1);
+    if (s.reorder_every < 0) scene_error("neighbours.reorder_every", "must be 0 (never) or more");
+    nb.finish();
+  } else {
+    r.optional("neighbours");
+  }
+
+  {
+    auto mats = r.node("materials");
+    if (!mats.IsMap() || mats.size() == 0)
+      scene_error("materials", "expected a map of named materials");
+    for (auto it = mats.begin(); it != mats.end(); ++it) {
+      std::string name = it->first.as<std::string>();
+      s.materials.push_back(read_material(name, it->second, "materials." + name));
+    }
+  }
+
+  s.modules.clear();
+  if (r.has("modules")) {
+    for (const auto& m : r.strings("modules")) {
+      if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
+        scene_error("modules", "unknown module '" + m + "' (available in this build: " +
+                                   (kModules.empty() ? std::string("none yet; the basic Eulerian SPH "
+                                                                   "equations are always on")
+                                                     : std::string("")) +
+                                   ")");
+      s.modules.push_back(m);
+    }
+  } else {
+    r.optional("modules");
+  }
+
+  {
+    auto bodies = r.node("bodies");
+    if (!bodies.IsSequence() || bodies.size() == 0) scene_error("bodies", "expected a list of bodies");
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      std::string p = "bodies[" + std::to_string(i) + "]";
+      MapReader b(bodies[i], p);
+      BodySpec body;
+      body.name = b.text("name");
+      p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
+      for (const auto& other : s.bodies)
+        if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
+      body.phase = b.choice("phase", {"fluid", "solid"});
+      std::string mat = b.text("material");
+      body.material = s.material_index(mat);
+      if (body.material < 0) {
+        std::vector<std::string> names;
+        for (const auto& m : s.materials) names.push_back(m.name);
+        std::string hint = closest_word(mat, names);
+        scene_error(p + ".material", "no material named '" + mat + "' in materials" +
+                                         (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+      }
+      body.shape = read_shape(b.node("shape"), p + ".shape", dim);
+      body.jitter = b.non_negative("jitter", 0.0);
+      if (body.jitter >= 0.5) scene_error(p + ".jitter", "must be below 0.5 (fraction of dp)");
+      body.seed = static_cast<unsigned>(b.integer("seed", 1));
+      if (b.has("initial")) {
+        MapReader in(b.node("initial"), p + ".initial");
+        body.density_expr = in.text("density", "");
+        if (!body.density_expr.empty()) check_expression(body.density_expr, in.at("density"));
+        if (in.has("velocity")) body.velocity_expr = expressions(in, "velocity", dim);
+        else in.optional("velocity");
+        in.finish();
+      } else {
+        b.optional("initial");
+      }
+      if (b.has("artificial_viscosity")) {
+        MapReader av(b.node("artificial_viscosity"), p + ".artificial_viscosity");
+        body.av_alpha = av.non_negative("alpha", 0.0);
+        body.av_beta = av.non_negative("beta", 0.0);
+        av.finish();
+      } else {
+        b.optional("artificial_viscosity");
+      }
+      b.finish();
+      // The body must lie inside the domain.
+      Point lo, hi;
+      body.shape.bounds(lo, hi);
+      for (int a = 0; a < dim; ++a)
+        if (lo[a] < s.domain_min[a] - 1e-12 || hi[a] > s.domain_max[a] + 1e-12)
+          scene_error(p + ".shape", "extends outside the domain along " + std::string(1, "xyz"[a]) +
+                                        " ([" + std::to_string(lo[a]) + ", " + std::to_string(hi[a]) +
+                                        "] is not within [" + std::to_string(s.domain_min[a]) +
+                                        ", " + std::to_string(s.domain_max[a]) + "])");
+      s.bodies.push_back(std::move(body));
+    }
+  }
+
+  if (r.has("boundary_conditions")) {
+    auto bcs = r.node("boundary_conditions");
+    if (!bcs.IsSequence()) scene_error("boundary_conditions", "expected a list");
+    for (std::size_t i = 0; i < bcs.size(); ++i) {
+      std::string p = "boundary_conditions[" + std::to_string(i) + "]";
+      MapReader b(bcs[i], p);
+      BoundarySpec bc;
+      bc.type = b.choice("type", {"fixed", "velocity"});
+      bc.name = b.text("name", "bc" + std::to_string(i));
+      if (b.has("body") == b.has("region"))
+        scene_error(p, "give exactly one of 'body' or 'region'");
+      if (b.has("body")) {
+        bc.body = b.text("body");
+        bool found = false;
+        for (const auto& body : s.bodies) found = found || body.name == bc.body;
+        if (!found) scene_error(p + ".body", "no body named '" + bc.body + "'");
+        b.optional("region");
+      } else {
+        bc.region = read_shape(b.node("region"), p + ".region", dim);
+        b.optional("body");
+      }
+      if (bc.type == "velocity") bc.velocity_expr = expressions(b, "velocity", dim);
+      b.finish();
+      s.boundaries.push_back(std::move(bc));
+    }
+  } else {
+    r.optional("boundary_conditions");
+  }
+
+  s.body_force = r.has("body_force") ? r.vector("body_force", dim) : (r.optional("body_force"), Point(dim, 0.0));
+  s.end_time = r.positive("end_time");
+
+  if (r.has("time_step")) {
+    MapReader t(r.node("time_step"), "time_step");
+    s.cfl = t.positive("cfl", 0.3);
+    if (s.cfl > 1.0) scene_error("time_step.cfl", "must not exceed 1");
+    s.force_factor = t.positive("force_factor", 0.25);
+    s.max_dt = t.non_negative("max", 0.0);
+    s.dt_collapse = t.positive("collapse_ratio", 1e-4);
+    t.finish();
+  } else {
+    r.optional("time_step");
+  }
+
+  if (r.has("guards")) {
+    MapReader g(r.node("guards"), "guards");
+    s.max_mach = g.positive("max_mach", 0.5);
+    s.min_distance = g.non_negative("min_distance", 0.1);
+    g.finish();
+  } else {
+    r.optional("guards");
+  }
+
+  if (r.has("output")) {
+    MapReader o(r.node("output"), "output");
+    s.output_every = o.non_negative("every", 0.0);
+    s.checkpoint_every = o.non_negative("checkpoint_every", 0.0);
+    if (o.has("fields")) s.output_fields = o.strings("fields");
+    else o.optional("fields");
+    o.finish();
+  } else {
+    r.optional("output");
+  }
+
+  if (r.has("probes")) {
+    MapReader pr(r.node("probes"), "probes");
+    s.probe_every = pr.non_negative("every", 0.0);
+    auto list = pr.node("list");
+    if (!list.IsSequence()) scene_error("probes.list", "expected a list of probes");
+    static const std::vector<std::string> types = {
+        "kinetic_energy", "total_mass", "momentum", "abs_momentum", "max_speed", "min_distance",
+        "integral",       "mean",       "value_at", "reaction_force"};
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      std::string p = "probes.list[" + std::to_string(i) + "]";
+      MapReader q(list[i], p);
+      ProbeSpec ps;
+      ps.name = q.text("name");
+      ps.type = q.choice("type", types);
+      if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at") {
+        ps.field = q.text("field");
+        auto dot = ps.field.find('.');
+        if (dot != std::string::npos) {
+          std::string c = ps.field.substr(dot + 1);
+          ps.component = c == "x" ? 0 : c == "y" ? 1 : c == "z" ? 2 : -2;
+          if (ps.component < 0 || ps.component >= dim)
+            scene_error(p + ".field", "component '" + c + "' is not an axis");
+          ps.field = ps.field.substr(0, dot);
+        }
+      } else {
+        q.optional("field");
+      }
+      ps.weight_expr = q.text("weight", "");
+      if (!ps.weight_expr.empty()) check_expression(ps.weight_expr, q.at("weight"));
+      ps.body = q.text("body", "");
+      if (ps.type == "value_at") ps.point = q.vector("point", dim);
+      else q.optional("point");
+      if (ps.type == "reaction_force") {
+        bool found = false;
+        for (const auto& bc : s.boundaries) found = found || bc.name == ps.body;
+        if (!found) scene_error(p + ".body", "reaction_force needs the name of a boundary condition");
+      } else if (!ps.body.empty()) {
+        bool found = false;
+        for (const auto& body : s.bodies) found = found || body.name == ps.body;
+        if (!found) scene_error(p + ".body", "no body named '" + ps.body + "'");
+      }
+      q.finish();
+      s.probes.push_back(std::move(ps));
+    }
+    pr.finish();
+  } else {
+    r.optional("probes");
+  }
+
+  if (r.has("reference")) {
+    auto refs = r.node("reference");
+    if (!refs.IsSequence()) scene_error("reference", "expected a list");
+    for (std::size_t i = 0; i < refs.size(); ++i) {
+      std::string p = "reference[" + std::to_string(i) + "]";
+      MapReader q(refs[i], p);
+      ReferenceSpec rs;
+      rs.name = q.text("name");
+      rs.value = q.number("value");
+      rs.probe = q.text("probe");
+      rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max", "min", "mean"});
+      rs.start = q.non_negative("start", 0.0);
+      bool found = false;
+      for (const auto& ps : s.probes) found = found || ps.name == rs.probe;
+      if (!found) scene_error(p + ".probe", "no probe named '" + rs.probe + "'");
+      q.finish();
+      s.references.push_back(std::move(rs));
+    }
+  } else {
+    r.optional("reference");
+  }
+  r.finish();
+  return s;
+}
+
+Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot read scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return load_scene_text(ss.str(), overrides, path);
+}
+
+}  // namespace monosph

@@ -1,0 +1,337 @@
+#include "simulation.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <unordered_map>
+#include <array>
+
+namespace monosph {
+
+template <int D>
+Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
+  if (scene_.dimension != D) throw std::logic_error("scene dimension mismatch");
+  kernel_ = Kernel<D>(scene_.kernel, scene_.h());
+  Domain<D> dom;
+  for (int a = 0; a < D; ++a) {
+    dom.lo[a] = scene_.domain_min[a];
+    dom.hi[a] = scene_.domain_max[a];
+    dom.periodic[a] = scene_.periodic[a];
+  }
+  nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
+  for (const auto& b : scene_.bodies)
+    bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha,
+                       b.av_beta});
+  for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
+  if (!scene_.boundaries.empty()) {
+    kbc_ = p_.add_field("boundary", 1, FieldType::Int, false);
+    for (std::size_t k = 0; k < scene_.boundaries.size(); ++k) {
+      const auto& bc = scene_.boundaries[k];
+      std::vector<Expression> ex;
+      for (int a = 0; a < static_cast<int>(bc.velocity_expr.size()); ++a)
+        ex.emplace_back(bc.velocity_expr[a], "boundary_conditions[" + std::to_string(k) + "].velocity");
+      bc_velocity_.push_back(std::move(ex));
+    }
+    reactions_.assign(scene_.boundaries.size(), V::Zero());
+  }
+}
+
+template <int D>
+void Simulation<D>::create_particles() {
+  const double dp = scene_.dp;
+  // Global lattice: nodes at domain.min + (k + 1/2) dp. Later bodies may not overlap earlier ones.
+  std::unordered_map<std::int64_t, int> node_owner;
+  for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+    const BodySpec& body = scene_.bodies[b];
+    Point lo, hi;
+    body.shape.bounds(lo, hi);
+    std::array<long, D> k0, k1, nk;
+    for (int a = 0; a < D; ++a) {
+      nk[a] = static_cast<long>(std::floor((scene_.domain_max[a] - scene_.domain_min[a]) / dp + 0.5));
+      k0[a] = std::max(0L, static_cast<long>(std::floor((lo[a] - scene_.domain_min[a]) / dp - 0.5)));
+      k1[a] = std::min(nk[a] - 1, static_cast<long>(std::ceil((hi[a] - scene_.domain_min[a]) / dp)));
+    }
+    std::vector<Point> pts;
+    std::array<long, D> k = k0;
+    while (true) {
+      Point x(D);
+      std::int64_t key = 0, mul = 1;
+      for (int a = 0; a < D; ++a) {
+        x[a] = scene_.domain_min[a] + (k[a] + 0.5) * dp;
+        key += k[a] * mul;
+        mul *= nk[a] + 1;
+      }
+      if (body.shape.contains(x)) {
+        auto [it, fresh] = node_owner.emplace(key, static_cast<int>(b));
+        if (!fresh) {
+          std::ostringstream os;
+          os << "bodies[" << b << "] (" << body.name << ").shape: overlaps body '"
+             << scene_.bodies[it->second].name << "' at (";
+          for (int a = 0; a < D; ++a) os << (a ? ", " : "") << x[a];
+          os << ")";
+          throw InputError(os.str());
+        }
+        pts.push_back(x);
+      }
+      int a = 0;
+      while (a < D && ++k[a] > k1[a]) k[a] = k0[a], ++a;
+      if (a == D) break;
+    }
+    if (pts.empty())
+      throw InputError("bodies[" + std::to_string(b) + "] (" + body.name +
+                       ").shape: contains no lattice node at dp = " + std::to_string(dp));
+    std::mt19937 rng(body.seed);
+    std::uniform_real_distribution<double> uni(-1.0, 1.0);
+    const Material& mat = scene_.materials[body.material];
+    Expression rho_ex, vel_ex[3];
+    if (!body.density_expr.empty()) rho_ex = Expression(body.density_expr, body.name + ".initial.density");
+    for (std::size_t a = 0; a < body.velocity_expr.size(); ++a)
+      vel_ex[a] = Expression(body.velocity_expr[a], body.name + ".initial.velocity");
+    std::size_t first = p_.append(pts.size());
+    auto x = p_.x();
+    auto v = p_.v();
+    auto m = p_.m();
+    auto rho = p_.rho();
+    auto ph = p_.phase();
+    auto mt = p_.material();
+    auto bd = p_.body();
+    const double vol = std::pow(dp, D);  // per unit depth in 2D
+    for (std::size_t q = 0; q < pts.size(); ++q) {
+      const std::size_t i = first + q;
+      for (int a = 0; a < D; ++a) x[i][a] = pts[q][a] + body.jitter * dp * uni(rng);
+      const double xx = x[i][0], yy = x[i][1], zz = D == 3 ? x[i][D - 1] : 0.0;
+      rho[i] = rho_ex.empty() ? mat.density : rho_ex(xx, yy, zz, 0.0);
+      if (!(rho[i] > 0))
+        throw InputError("bodies[" + std::to_string(b) + "] (" + body.name +
+                         ").initial.density: not positive at a particle (" + std::to_string(rho[i]) + ")");
+      m[i] = rho[i] * vol;
+      for (int a = 0; a < D; ++a)
+        v[i][a] = body.velocity_expr.empty() ? 0.0 : vel_ex[a](xx, yy, zz, 0.0);
+      ph[i] = bodies_[b].phase;
+      mt[i] = body.material;
+      bd[i] = static_cast<std::int64_t>(b);
+    }
+  }
+  // Boundary-condition membership.
+  if (kbc_ >= 0) {
+    auto bc = p_.template view<std::int64_t>(kbc_);
+    auto x = p_.x();
+    auto bd = p_.body();
+    for (std::size_t k = 0; k < scene_.boundaries.size(); ++k) {
+      const auto& s = scene_.boundaries[k];
+      std::size_t count = 0;
+      for (std::size_t i = 0; i < p_.size(); ++i) {
+        bool in;
+        if (s.region) {
+          Point xi(x[i].data(), x[i].data() + D);
+          in = s.region->contains(xi);
+        } else {
+          in = scene_.bodies[bd[i]].name == s.body;
+        }
+        if (in) bc[i] = static_cast<std::int64_t>(k + 1), ++count;
+      }
+      if (count == 0)
+        throw InputError("boundary_conditions[" + std::to_string(k) + "]: selects no particle");
+    }
+  }
+}
+
+template <int D>
+std::string Simulation<D>::describe(std::size_t i) {
+  std::ostringstream os;
+  os.precision(6);
+  os << "particle id " << p_.id()[i] << " (body '" << bodies_[p_.body()[i]].name << "') at (";
+  for (int a = 0; a < D; ++a) os << (a ? ", " : "") << p_.x()[i][a];
+  os << ")";
+  return os.str();
+}
+
+template <int D>
+void Simulation<D>::update_neighbours() {
+  if (!rebuild_requested_ && !nb_.needs_rebuild(p_)) return;
+  rebuild_requested_ = false;
+  const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
+  long bad = nb_.build(p_, reorder);
+  if (bad >= 0) {
+    std::ostringstream os;
+    os << describe(bad) << " left the domain at t = " << t_;
+    throw RunAborted(os.str());
+  }
+  for (auto& m : modules_) m->on_rebuild(*this);
+}
+
+template <int D>
+void Simulation<D>::rebuild_neighbours() {
+  rebuild_requested_ = true;
+  update_neighbours();
+}
+
+template <int D>
+void Simulation<D>::apply_bc_velocity(double t) {
+  if (kbc_ < 0) return;
+  auto bc = p_.template view<std::int64_t>(kbc_);
+  auto v = p_.v();
+  auto x = p_.x();
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (!bc[i]) continue;
+    const auto& ex = bc_velocity_[bc[i] - 1];
+    if (ex.empty()) {
+      v[i].setZero();
+    } else {
+      const double zz = D == 3 ? x[i][D - 1] : 0.0;
+      for (int a = 0; a < D; ++a) v[i][a] = ex[a](x[i][0], x[i][1], zz, t);
+    }
+  }
+}
+
+template <int D>
+void Simulation<D>::kick(double h, double t_bc) {
+  auto v = p_.v();
+  auto a = p_.a();
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) v[i] += h * a[i];
+  apply_bc_velocity(t_bc);
+}
+
+template <int D>
+void Simulation<D>::drift(double dt) {
+  auto x = p_.x();
+  auto v = p_.v();
+  auto rho = p_.rho();
+  auto drho = p_.drho();
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] += dt * v[i];
+    rho[i] += dt * drho[i];
+  }
+  for (auto& m : modules_) m->drift(*this, dt);
+}
+
+template <int D>
+void Simulation<D>::compute_forces() {
+  for (auto& m : modules_) m->sums(*this);
+  for (auto& m : modules_) m->constitutive(*this);
+  auto a = p_.a();
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) a[i] = g_;
+  for (auto& m : modules_) m->forces(*this);
+  if (kbc_ >= 0) {  // reaction of each constrained set: what holds it on its prescribed path
+    auto bc = p_.template view<std::int64_t>(kbc_);
+    auto mass = p_.m();
+    for (auto& r : reactions_) r.setZero();
+    for (std::size_t i = 0; i < n; ++i)
+      if (bc[i]) reactions_[bc[i] - 1] -= mass[i] * a[i];
+  }
+}
+
+template <int D>
+double Simulation<D>::compute_dt() {
+  auto v = p_.v();
+  auto a = p_.a();
+  auto mt = p_.material();
+  const std::size_t n = p_.size();
+  const double h = kernel_.h();
+  std::vector<double> c(scene_.materials.size());
+  for (std::size_t k = 0; k < c.size(); ++k) c[k] = scene_.materials[k].wave_speed();
+  double dt_ac = std::numeric_limits<double>::infinity(), dt_f = dt_ac;
+#pragma omp parallel for reduction(min : dt_ac, dt_f) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    dt_ac = std::min(dt_ac, h / (c[mt[i]] + v[i].norm()));
+    const double an = a[i].norm();
+    if (an > 0) dt_f = std::min(dt_f, std::sqrt(h / an));
+  }
+  double dt = std::min(scene_.cfl * dt_ac, scene_.force_factor * dt_f);
+  for (auto& m : modules_) dt = std::min(dt, m->max_dt(*this));
+  if (scene_.max_dt > 0) dt = std::min(dt, scene_.max_dt);
+  return dt;
+}
+
+template <int D>
+void Simulation<D>::init(bool restarted) {
+  if (restarted) {
+    rebuild_requested_ = true;
+    update_neighbours();
+    if (dt_ <= 0) dt_ = compute_dt();
+    dt0_ = dt_;
+    return;
+  }
+  rebuild_requested_ = true;
+  update_neighbours();
+  apply_bc_velocity(t_);
+  compute_forces();
+  check_guards();
+  dt_ = compute_dt();
+  dt0_ = dt_;
+}
+
+template <int D>
+void Simulation<D>::advance(double stop) {
+  // Approach `stop` in at most two equal steps so that no sliver of a step is left.
+  const double rest = stop - t_;
+  const double dt = rest <= dt_ ? rest : rest < 2 * dt_ ? 0.5 * rest : dt_;
+  kick(0.5 * dt, t_ + 0.5 * dt);
+  for (auto& m : modules_) m->rates(*this);
+  drift(dt);
+  t_ += dt;
+  ++step_;
+  update_neighbours();
+  compute_forces();
+  kick(0.5 * dt, t_);
+  check_guards();
+  dt_ = compute_dt();
+  if (dt_ < scene_.dt_collapse * dt0_) {
+    std::ostringstream os;
+    os << "time step collapsed to " << dt_ << " s (initial " << dt0_ << " s) at t = " << t_;
+    throw RunAborted(os.str());
+  }
+}
+
+template <int D>
+void Simulation<D>::check_guards() {
+  auto x = p_.x();
+  auto v = p_.v();
+  auto rho = p_.rho();
+  auto mt = p_.material();
+  const std::size_t n = p_.size();
+  long bad = -1;
+  int why = 0;  // 1 non-finite, 2 too fast
+#pragma omp parallel for schedule(static) reduction(max : bad)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!x[i].allFinite() || !v[i].allFinite() || !std::isfinite(rho[i])) bad = std::max(bad, long(i));
+  }
+  if (bad >= 0) why = 1;
+  if (!why) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (v[i].norm() > scene_.max_mach * scene_.materials[mt[i]].wave_speed()) {
+        bad = static_cast<long>(i), why = 2;
+        break;
+      }
+    }
+  }
+  std::ostringstream os;
+  os.precision(6);
+  if (why == 1) {
+    os << "non-finite state (position, velocity or density) at " << describe(bad) << ", t = " << t_;
+    throw RunAborted(os.str());
+  }
+  if (why == 2) {
+    os << describe(bad) << " moves at " << v[bad].norm() << " m/s, above " << scene_.max_mach
+       << " of its wave speed " << scene_.materials[mt[bad]].wave_speed() << " m/s, at t = " << t_;
+    throw RunAborted(os.str());
+  }
+  if (min_i_ >= 0 && min_r_ < scene_.min_distance * scene_.dp) {
+    os << describe(min_i_) << " and particle id " << p_.id()[min_j_] << " are " << min_r_ / scene_.dp
+       << " dp apart (limit " << scene_.min_distance << " dp) at t = " << t_;
+    throw RunAborted(os.str());
+  }
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace monosph

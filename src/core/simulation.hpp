@@ -1,0 +1,108 @@
+#pragma once
+// Simulation<D>: the particle container, neighbours, modules and the kick-drift-kick integrator.
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "expression.hpp"
+#include "kernel.hpp"
+#include "neighbours.hpp"
+#include "particles.hpp"
+#include "scene.hpp"
+
+namespace monosph {
+
+template <int D>
+class Simulation;
+
+// Physics comes as modules; a time step calls each enabled module in every pass.
+template <int D>
+class Module {
+ public:
+  virtual ~Module() = default;
+  virtual std::string name() const = 0;
+  virtual void sums(Simulation<D>&) {}                 // kernel sums at the new positions
+  virtual void rates(Simulation<D>&) {}                // rates from the half-step velocities
+  virtual void drift(Simulation<D>&, double dt) {}     // integrate module state over dt
+  virtual void constitutive(Simulation<D>&) {}         // per particle: EOS, stress
+  virtual void forces(Simulation<D>&) {}               // add to the acceleration
+  virtual void on_rebuild(Simulation<D>&) {}           // after a neighbour-list rebuild
+  virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
+};
+
+struct BodyInfo {
+  std::string name;
+  Phase phase;
+  int material;
+  double av_alpha, av_beta;
+};
+
+template <int D>
+class Simulation {
+ public:
+  using V = Vec<D>;
+  explicit Simulation(Scene scene);
+
+  // Fills bodies on the lattice and applies initial fields (fresh start).
+  void create_particles();
+  void add_module(std::unique_ptr<Module<D>> m) { modules_.push_back(std::move(m)); }
+  // First neighbour build and force evaluation; with `restarted` the stored a, L... are kept.
+  void init(bool restarted = false);
+  // One kick-drift-kick step, shortened so as not to pass `stop`. Throws RunAborted (with a
+  // diagnosis) if a guard trips.
+  void advance(double stop = std::numeric_limits<double>::infinity());
+  // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
+  void rebuild_neighbours();
+
+  // Accessors used by modules.
+  Particles<D>& particles() { return p_; }
+  const Scene& scene() const { return scene_; }
+  const Kernel<D>& kernel() const { return kernel_; }
+  const Neighbours<D>& neighbours() const { return nb_; }
+  const std::vector<Material>& materials() const { return scene_.materials; }
+  const std::vector<BodyInfo>& bodies() const { return bodies_; }
+  const std::vector<std::unique_ptr<Module<D>>>& modules() const { return modules_; }
+  double time() const { return t_; }
+  double dt() const { return dt_; }
+  long step() const { return step_; }
+  double dp() const { return scene_.dp; }
+  const V& body_force() const { return g_; }
+  void set_state(double t, long step, double dt) { t_ = t, step_ = step, dt_ = dt; }
+
+  // Smallest pair distance seen in the last force pass (set by the pair-force module).
+  void set_min_distance(double r, long i, long j) { min_r_ = r, min_i_ = i, min_j_ = j; }
+  double min_distance() const { return min_r_; }
+  // Reaction force of each boundary-condition set (force the constraint applies), last step.
+  const std::vector<V>& reactions() const { return reactions_; }
+  const std::vector<BoundarySpec>& boundaries() const { return scene_.boundaries; }
+  // "particle id 12 (body 'water') at (x, y)".
+  std::string describe(std::size_t i);
+
+ private:
+  void kick(double h, double t_bc);
+  void drift(double dt);
+  void update_neighbours();
+  void compute_forces();
+  double compute_dt();
+  void check_guards();
+  void apply_bc_velocity(double t);
+
+  Scene scene_;
+  Particles<D> p_;
+  Kernel<D> kernel_;
+  Neighbours<D> nb_;
+  std::vector<BodyInfo> bodies_;
+  std::vector<std::unique_ptr<Module<D>>> modules_;
+  std::vector<std::vector<Expression>> bc_velocity_;
+  std::vector<V> reactions_;
+  int kbc_ = -1;  // field "boundary" (1 + index of the boundary condition, 0 = free)
+  V g_;
+  double t_ = 0, dt_ = 0, dt0_ = 0;
+  long step_ = 0;
+  double min_r_ = 0;
+  long min_i_ = -1, min_j_ = -1;
+  bool rebuild_requested_ = false;
+};
+
+}  // namespace monosph

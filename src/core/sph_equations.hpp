@@ -1,0 +1,33 @@
+#pragma once
+// The Eulerian SPH equations every phase shares (Mohseni-Mofidi & Bierwisch 2020, "MMB"):
+// Shepard sum and correction matrix (Eq. 7-10), velocity gradient (Eq. 16), continuity and
+// momentum (Eq. 11) with Sigma = -p I + S (Eq. 12), linear EOS (Eq. 13), artificial viscosity
+// (Eq. 17-18). Particles interact here if both are fluid, or both belong to the same solid body.
+#include "simulation.hpp"
+
+namespace monosph {
+
+template <int D>
+class SphEquations : public Module<D> {
+ public:
+  // store_velocity_gradient: keep grad v as a field (solid modules read it).
+  explicit SphEquations(Simulation<D>& sim, bool store_velocity_gradient = false);
+  std::string name() const override { return "sph"; }
+  void sums(Simulation<D>& sim) override;
+  void rates(Simulation<D>& sim) override;
+  void constitutive(Simulation<D>& sim) override;
+  void forces(Simulation<D>& sim) override;
+
+ private:
+  int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1;
+  std::vector<double> rmin_;  // scratch buffers of the force pass
+  std::vector<int> jmin_;
+  std::vector<Mat<D>> sig_;
+};
+
+// Correction matrix L_i = [sum_j V_j (x_j - x_i) (x) grad_i W_ij]^-1 (MMB Eq. 9). Directions with
+// too little support (eigenvalue < 0.05 of a full one) are left uncorrected.
+template <int D>
+Mat<D> invert_correction(const Mat<D>& b);
+
+}  // namespace monosph

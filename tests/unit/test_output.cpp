@@ -1,0 +1,256 @@
+// VtkSeries: frames read back with VTK's own reader; the .pvd lists every frame.
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/output_vtk.hpp"
+
+namespace monosph {
+namespace {
+namespace fs = std::filesystem;
+
+// A fresh directory per test, removed afterwards.
+struct TmpDir {
+  fs::path path;
+  explicit TmpDir(const std::string& tag) {
+    path = fs::temp_directory_path() / ("monosph_out_" + tag + "_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+  }
+  ~TmpDir() { fs::remove_all(path); }
+};
+
+vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& file) {
+  vtkNew<vtkXMLGenericDataObjectReader> r;
+  r->SetFileName(file.c_str());
+  r->Update();
+  auto* g = vtkUnstructuredGrid::SafeDownCast(r->GetOutput());
+  return g;
+}
+
+struct PvdEntry {
+  double time;
+  std::string file;
+};
+std::vector<PvdEntry> read_pvd(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  std::vector<PvdEntry> out;
+  std::regex re(R"re(<DataSet[^>]*timestep="([^"]*)"[^>]*file="([^"]*)")re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator();
+       ++it)
+    out.push_back({std::stod((*it)[1].str()), (*it)[2].str()});
+  return out;
+}
+
+// Fills p with n particles and a few extra fields of every shape.
+template <int D>
+void make_particles(Particles<D>& p, std::size_t n) {
+  p.append(n);
+  p.add_field("stress", D * D, FieldType::Real, true);
+  p.add_field("strain3", 9, FieldType::Real, true);
+  p.add_field("neighbours", 1, FieldType::Int, true);
+  p.add_field("hidden", 1, FieldType::Real, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < D; ++d) {
+      p.x()[i][d] = 10.0 * i + d;
+      p.v()[i][d] = -1.0 * i - d;
+    }
+    p.rho()[i] = 1000.0 + i;
+    p.template view<Mat<D>>("stress")[i] = Mat<D>::Random();
+    p.template view<Mat3>("strain3")[i] = Mat3::Random();
+    p.template view<std::int64_t>("neighbours")[i] = 3 * i + 7;
+    p.template view<double>("hidden")[i] = 0.25 * i;
+  }
+}
+
+template <int D>
+void check_frame(const fs::path& file, Particles<D>& p, bool with_hidden) {
+  auto g = read_vtu(file);
+  ASSERT_TRUE(g);
+  const std::size_t n = p.size();
+  ASSERT_EQ(g->GetNumberOfPoints(), static_cast<vtkIdType>(n));
+  ASSERT_EQ(g->GetNumberOfCells(), static_cast<vtkIdType>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_EQ(g->GetCellType(i), VTK_VERTEX);
+    double x[3];
+    g->GetPoint(i, x);
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(x[d], d < D ? p.x()[i][d] : 0.0);
+  }
+  auto* pd = g->GetPointData();
+  // Output fields of Particles plus ours; position and mass are not output fields.
+  for (const char* name : {"velocity", "density", "pressure", "phase", "body", "id", "stress",
+                           "strain3", "neighbours"})
+    EXPECT_TRUE(pd->GetArray(name)) << name;
+  EXPECT_FALSE(pd->GetArray("position"));
+  EXPECT_FALSE(pd->GetArray("mass"));
+  EXPECT_EQ(pd->GetArray("hidden") != nullptr, with_hidden);
+
+  auto* vel = pd->GetArray("velocity");
+  ASSERT_EQ(vel->GetNumberOfComponents(), 3);
+  auto* rho = pd->GetArray("density");
+  ASSERT_EQ(rho->GetNumberOfComponents(), 1);
+  auto* stress = pd->GetArray("stress");
+  ASSERT_EQ(stress->GetNumberOfComponents(), 9);
+  auto* strain = pd->GetArray("strain3");
+  ASSERT_EQ(strain->GetNumberOfComponents(), 9);
+  auto* nb = pd->GetArray("neighbours");
+  ASSERT_EQ(nb->GetNumberOfComponents(), 1);
+  EXPECT_TRUE(nb->GetDataType() == VTK_LONG || nb->GetDataType() == VTK_LONG_LONG);
+  EXPECT_EQ(nb->GetDataTypeSize(), 8);
+  auto* id = pd->GetArray("id");
+  EXPECT_TRUE(id->GetDataType() == VTK_LONG || id->GetDataType() == VTK_LONG_LONG);
+  EXPECT_EQ(id->GetDataTypeSize(), 8);
+  EXPECT_EQ(vel->GetDataType(), VTK_DOUBLE);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(vel->GetComponent(i, d), d < D ? p.v()[i][d] : 0.0);
+    EXPECT_EQ(rho->GetComponent(i, 0), p.rho()[i]);
+    const Mat<D> s = p.template view<Mat<D>>("stress")[i];
+    const Mat3 e = p.template view<Mat3>("strain3")[i];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        // Row-major 3x3, zero padded.
+        EXPECT_EQ(stress->GetComponent(i, 3 * r + c), r < D && c < D ? s(r, c) : 0.0);
+        EXPECT_EQ(strain->GetComponent(i, 3 * r + c), e(r, c));
+      }
+    EXPECT_EQ(nb->GetComponent(i, 0), 3.0 * i + 7);
+    EXPECT_EQ(id->GetComponent(i, 0), static_cast<double>(p.id()[i]));
+  }
+  auto* tv = g->GetFieldData()->GetArray("TimeValue");
+  ASSERT_TRUE(tv);
+}
+
+template <int D>
+void series_round_trip() {
+  TmpDir tmp("series" + std::to_string(D));
+  Particles<D> p;
+  make_particles(p, 7);
+  VtkSeries<D> out(tmp.path / "frames", "run");
+  EXPECT_EQ(out.frames(), 0);
+  const fs::path f0 = out.write(p, 0.0, 0);
+  EXPECT_EQ(f0, tmp.path / "frames" / "run_000000.vtu");
+  check_frame(f0, p, false);
+  const fs::path f1 = out.write(p, 0.125, 40, {"hidden"});
+  EXPECT_EQ(f1.filename(), "run_000040.vtu");
+  check_frame(f1, p, true);
+  EXPECT_EQ(out.frames(), 2);
+  EXPECT_EQ(out.pvd_path(), tmp.path / "frames" / "run.pvd");
+
+  auto entries = read_pvd(out.pvd_path());
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].time, 0.0);
+  EXPECT_EQ(entries[1].time, 0.125);
+  EXPECT_EQ(entries[0].file, "run_000000.vtu");
+  EXPECT_EQ(entries[1].file, "run_000040.vtu");
+  for (const auto& e : entries) {
+    EXPECT_TRUE(fs::exists(out.pvd_path().parent_path() / e.file));
+    auto g = read_vtu(out.pvd_path().parent_path() / e.file);
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->GetFieldData()->GetArray("TimeValue")->GetComponent(0, 0), e.time);
+  }
+}
+
+TEST(VtkSeries, RoundTrip2D) {
+  series_round_trip<2>();
+}
+TEST(VtkSeries, RoundTrip3D) {
+  series_round_trip<3>();
+}
+
+TEST(VtkSeries, EmptyParticleSet) {
+  TmpDir tmp("empty");
+  Particles<3> p;
+  VtkSeries<3> out(tmp.path, "e");
+  auto f = out.write(p, 1.0, 1);
+  auto g = read_vtu(f);
+  ASSERT_TRUE(g);
+  EXPECT_EQ(g->GetNumberOfPoints(), 0);
+}
+
+TEST(VtkSeries, UnknownExtraFieldThrows) {
+  TmpDir tmp("unknown");
+  Particles<2> p;
+  p.append(3);
+  VtkSeries<2> out(tmp.path, "u");
+  try {
+    out.write(p, 0.0, 0, {"no_such_field"});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_field"), std::string::npos);
+  }
+  EXPECT_EQ(out.frames(), 0);
+}
+
+TEST(VtkSeries, UnwritableDirectoryThrows) {
+  TmpDir tmp("unwritable");
+  fs::create_directories(tmp.path);
+  const fs::path file = tmp.path / "regular_file";
+  std::ofstream(file) << "x";
+  try {
+    VtkSeries<2> out(file / "sub", "x");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("output: cannot write to"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("regular_file"), std::string::npos);
+  }
+  EXPECT_THROW(VtkSeries<3>(file, "x"), InputError);
+  EXPECT_THROW(VtkSeries<3>("/proc/forbidden", "x"), InputError);
+}
+
+TEST(VtkSeries, RestartKeepsEarlierFrames) {
+  TmpDir tmp("restart");
+  Particles<2> p;
+  make_particles(p, 4);
+  {
+    VtkSeries<2> out(tmp.path, "r");
+    for (int k = 0; k < 4; ++k) out.write(p, 0.5 * k, 10 * k);  // t = 0, 0.5, 1, 1.5
+  }
+  VtkSeries<2> out(tmp.path, "r");
+  EXPECT_EQ(out.restore_frames(1.0), 3);  // keeps t = 0, 0.5 and the frame at the restart time
+  EXPECT_EQ(out.frames(), 3);
+  EXPECT_EQ(read_pvd(out.pvd_path()).size(), 3u);  // rewritten at once
+  out.write(p, 1.25, 25);
+  auto entries = read_pvd(out.pvd_path());
+  ASSERT_EQ(entries.size(), 4u);
+  const double times[] = {0.0, 0.5, 1.0, 1.25};
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(entries[k].time, times[k]);
+  EXPECT_EQ(entries[2].file, "r_000020.vtu");
+  EXPECT_EQ(entries[3].file, "r_000025.vtu");
+
+  // Writing the restart frame again replaces its entry (and any later one).
+  VtkSeries<2> again(tmp.path, "r");
+  EXPECT_EQ(again.restore_frames(1.0), 3);
+  again.write(p, 1.0, 20);
+  EXPECT_EQ(again.frames(), 3);
+
+  // No .pvd yet: nothing to restore.
+  VtkSeries<2> fresh(tmp.path / "fresh", "r");
+  EXPECT_EQ(fresh.restore_frames(10.0), 0);
+}
+
+TEST(VtkSeries, SameStepReplacesLastEntry) {
+  TmpDir tmp("same");
+  Particles<2> p;
+  p.append(2);
+  VtkSeries<2> out(tmp.path, "s");
+  out.write(p, 0.0, 0);
+  out.write(p, 0.5, 5);
+  out.write(p, 0.5, 5);
+  EXPECT_EQ(out.frames(), 2);
+  EXPECT_EQ(read_pvd(out.pvd_path()).size(), 2u);
+}
+
+}  // namespace
+}  // namespace monosph

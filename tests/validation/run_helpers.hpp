@@ -1,0 +1,71 @@
+#pragma once
+// Runs the monosph binary and reads what it wrote.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace monosph::test {
+
+struct Result {
+  int code = -1;
+  std::string output;  // stdout + stderr
+};
+
+inline Result run_monosph(const std::string& args) {
+  Result r;
+  std::string cmd = std::string(MONOSPH_BIN) + " " + args + " 2>&1";
+  FILE* f = popen(cmd.c_str(), "r");
+  if (!f) return r;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, f)) r.output.append(buf, n);
+  int st = pclose(f);
+  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+inline std::string source(const std::string& rel) { return std::string(MONOSPH_SOURCE_DIR) + "/" + rel; }
+inline std::string out_dir(const std::string& name) {
+  auto d = std::filesystem::path(MONOSPH_TEST_OUT) / name;
+  std::filesystem::remove_all(d);
+  return d.string();
+}
+
+inline nlohmann::json summary(const std::string& dir) {
+  std::ifstream in(dir + "/summary.json");
+  return nlohmann::json::parse(in);
+}
+
+// probes.csv as named columns.
+struct Table {
+  std::vector<std::string> head;
+  std::vector<std::vector<double>> cols;
+  const std::vector<double>& operator[](const std::string& name) const {
+    for (std::size_t k = 0; k < head.size(); ++k)
+      if (head[k] == name) return cols[k];
+    throw std::runtime_error("no column " + name);
+  }
+};
+
+inline Table read_csv(const std::string& file) {
+  Table t;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) t.head.push_back(c);
+  t.cols.assign(t.head.size(), {});
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::size_t k = 0;
+    for (std::string c; std::getline(ls, c, ',') && k < t.cols.size(); ++k) t.cols[k].push_back(std::stod(c));
+  }
+  return t;
+}
+
+}  // namespace monosph::test
