@@ -1,13 +1,19 @@
 #include "assemble.hpp"
 
+#include <algorithm>
+
 #include "core/sph_equations.hpp"
+#include "solid/solid_module.hpp"
 
 namespace monosph {
 
 template <int D>
 void assemble_modules(Simulation<D>& sim) {
-  // The shared Eulerian SPH equations are always on; physics modules follow in later steps.
-  sim.add_module(std::make_unique<SphEquations<D>>(sim, false));
+  const auto& mods = sim.scene().modules;
+  auto enabled = [&](const char* m) { return std::find(mods.begin(), mods.end(), m) != mods.end(); };
+  // The shared Eulerian SPH equations are always on (first: the others read their sums).
+  sim.add_module(std::make_unique<SphEquations<D>>(sim, enabled("solid")));
+  if (enabled("solid")) sim.add_module(std::make_unique<SolidModule<D>>(sim));
 }
 
 template void assemble_modules<2>(Simulation<2>&);

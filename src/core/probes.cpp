@@ -13,6 +13,7 @@ template <int D>
 struct Probes<D>::Item {
   ProbeSpec spec;
   int field = -1, body = -1, bc = -1;
+  std::int64_t id = -1;  // tracked particle
   Expression weight;
 };
 
@@ -45,7 +46,20 @@ Probes<D>::Probes(Simulation<D>& sim) {
       for (std::size_t b = 0; b < sim.bodies().size(); ++b)
         if (sim.bodies()[b].name == s.body) it->body = static_cast<int>(b);
     }
+    if (s.type == "disorder" && !p.has("disorder"))
+      throw InputError(where + ".type: 'disorder' needs a solid body (the solid module computes it)");
     if (!s.weight_expr.empty()) it->weight = Expression(s.weight_expr, where + ".weight");
+    if (s.type == "tracked") {  // the particle nearest to the point now, followed by its id
+      double best = std::numeric_limits<double>::infinity();
+      auto x = p.x();
+      auto bd = p.body();
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        if (it->body >= 0 && bd[i] != it->body) continue;
+        double d2 = 0;
+        for (int a = 0; a < D; ++a) d2 += (x[i][a] - s.point[a]) * (x[i][a] - s.point[a]);
+        if (d2 < best) best = d2, it->id = p.id()[i];
+      }
+    }
     if (s.type == "momentum" || s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) columns_.push_back(s.name + "_" + ax[a]);
     } else {
@@ -86,6 +100,33 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e += 0.5 * m[i] * v[i].squaredNorm() * weight(i);
       out.push_back(e);
+    } else if (s.type == "elastic_energy") {
+      // sum V (S:S / (4 mu) + p^2 / (2 K)) over solid particles
+      const int ks = p.find("deviatoric_stress");
+      auto pr = p.p();
+      auto mt = p.material();
+      auto ph = p.phase();
+      double e = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i) || ph[i] != kSolid) continue;
+        const Material& mm = sim.materials()[mt[i]];
+        double ss = 0;
+        if (ks >= 0 && mm.shear_modulus > 0) {
+          const Mat3& S = p.template view<Mat3>(ks)[i];
+          ss = S.cwiseProduct(S).sum() / (4 * mm.shear_modulus);
+        }
+        e += m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
+      }
+      out.push_back(e);
+    } else if (s.type == "disorder") {
+      // RMS over the (solid) particles of the per-particle disorder, in dp
+      auto dis = p.template view<double>("disorder");
+      auto ph = p.phase();
+      double sum = 0;
+      std::size_t cnt = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i) && ph[i] == kSolid) sum += dis[i] * dis[i], ++cnt;
+      out.push_back(cnt ? std::sqrt(sum / cnt) : 0.0);
     } else if (s.type == "total_mass") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
@@ -126,6 +167,12 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         if (d2 < best) best = d2, val = value(i);
       }
       out.push_back(val);
+    } else if (s.type == "tracked") {
+      auto ids = p.id();
+      double val = std::numeric_limits<double>::quiet_NaN();
+      for (std::size_t i = 0; i < n; ++i)
+        if (ids[i] == it->id) val = value(i);
+      out.push_back(val);
     } else if (s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) out.push_back(sim.reactions()[it->bc][a]);
     }
@@ -145,6 +192,14 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
   if (measure == "min") return *std::min_element(yy.begin(), yy.end());
   const double mean = std::accumulate(yy.begin(), yy.end(), 0.0) / yy.size();
   if (measure == "mean") return mean;
+  if (measure == "peak_ratio") {
+    // last local maximum of y - y(start) over the first one: amplitude retention
+    std::vector<double> peaks;
+    for (std::size_t k = 1; k + 1 < yy.size(); ++k)
+      if (yy[k] > yy[k - 1] && yy[k] >= yy[k + 1] && yy[k] > yy[0]) peaks.push_back(yy[k] - yy[0]);
+    if (peaks.size() < 2) return nan;
+    return peaks.back() / peaks.front();
+  }
   // frequency / period from the upward zero crossings of y - mean (linear interpolation);
   // same-direction crossings make the estimate insensitive to an offset in the mean.
   std::vector<double> cross;

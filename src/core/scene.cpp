@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "expression.hpp"
 #include "scene_reader.hpp"
 
@@ -22,7 +24,7 @@ int Scene::material_index(const std::string& n) const {
 
 namespace {
 
-const std::vector<std::string> kModules = {};  // physics modules available to scenes (steps 2-5)
+const std::vector<std::string> kModules = {"solid"};  // physics modules available to scenes
 
 void check_expression(const std::string& text, const std::string& path) { Expression e(text, path); }
 
@@ -36,6 +38,36 @@ std::vector<std::string> expressions(MapReader& r, const std::string& key, int d
     out.push_back(as_text(n[a], p));
     check_expression(out.back(), p);
   }
+  return out;
+}
+
+// Built-in initial velocity profiles, written out as expressions.
+std::vector<std::string> velocity_profile(MapReader& in, int dim) {
+  MapReader pr(in.node("velocity_profile"), in.at("velocity_profile"));
+  pr.choice("type", {"cantilever_mode"});
+  // Fundamental bending mode of a clamped plate (MMB Eq. 35-36): v(x) = v_l f(x)/f(l),
+  // f(x) = (cos kl + cosh kl)(cosh kx - cos kx) + (sin kl - sinh kl)(sinh kx - sin kx).
+  const double vl = pr.number("amplitude");
+  const double x0 = pr.number("clamp");
+  const double len = pr.positive("length");
+  const double kl = pr.positive("kl", 1.875);
+  const std::string axis = pr.choice("direction", {"x", "y", "z"}, "y");
+  const std::string along = pr.choice("along", {"x", "y", "z"}, "x");
+  pr.finish();
+  const int a = axis[0] - 'x';
+  if (a >= dim || along[0] - 'x' >= dim) scene_error(pr.path(), "axis not in this dimension");
+  const double k = kl / len;
+  auto f = [&](double x) {
+    return (std::cos(kl) + std::cosh(kl)) * (std::cosh(k * x) - std::cos(k * x)) +
+           (std::sin(kl) - std::sinh(kl)) * (std::sinh(k * x) - std::sin(k * x));
+  };
+  const std::string sx = fmt::format("({}-({:.17g}))", along, x0);
+  const std::string ks = fmt::format("{:.17g}", k);
+  std::string e = fmt::format(
+      "{0}>0 ? {1:.17g}*(({2:.17g})*(cosh({3}*{0})-cos({3}*{0}))+({4:.17g})*(sinh({3}*{0})-sin({3}*{0}))) : 0",
+      sx, vl / f(len), std::cos(kl) + std::cosh(kl), ks, std::sin(kl) - std::sinh(kl));
+  std::vector<std::string> out(dim, "0");
+  out[a] = e;
   return out;
 }
 
@@ -263,11 +295,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   if (r.has("modules")) {
     for (const auto& m : r.strings("modules")) {
       if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
-        scene_error("modules", "unknown module '" + m + "' (available in this build: " +
-                                   (kModules.empty() ? std::string("none yet; the basic Eulerian SPH "
-                                                                   "equations are always on")
-                                                     : std::string("")) +
-                                   ")");
+        scene_error("modules", "unknown module '" + m + "' (available: solid; the basic Eulerian SPH "
+                                   "equations are always on)");
       s.modules.push_back(m);
     }
   } else {
@@ -303,8 +332,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         MapReader in(b.node("initial"), p + ".initial");
         body.density_expr = in.text("density", "");
         if (!body.density_expr.empty()) check_expression(body.density_expr, in.at("density"));
+        if (in.has("velocity") && in.has("velocity_profile"))
+          scene_error(in.path(), "give either velocity or velocity_profile, not both");
         if (in.has("velocity")) body.velocity_expr = expressions(in, "velocity", dim);
         else in.optional("velocity");
+        if (in.has("velocity_profile")) body.velocity_expr = velocity_profile(in, dim);
+        else in.optional("velocity_profile");
         in.finish();
       } else {
         b.optional("initial");
@@ -316,6 +349,32 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         av.finish();
       } else {
         b.optional("artificial_viscosity");
+      }
+      if (b.has("artificial_stress")) {
+        MapReader as(b.node("artificial_stress"), p + ".artificial_stress");
+        body.as_epsilon = as.non_negative("epsilon", 0.3);
+        body.as_n = as.positive("n", 4.0);
+        as.finish();
+      } else {
+        b.optional("artificial_stress");
+      }
+      if (b.has("density_diffusion")) {
+        MapReader dd(b.node("density_diffusion"), p + ".density_diffusion");
+        body.delta = dd.non_negative("delta", 0.1);
+        dd.finish();
+      } else {
+        b.optional("density_diffusion");
+      }
+      if (b.has("hourglass")) {
+        if (body.phase != "solid") scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
+        MapReader hg(b.node("hourglass"), p + ".hourglass");
+        body.hg_xi = hg.non_negative("xi", 0.0);
+        body.hg_zeta = hg.non_negative("zeta", 0.0);
+        body.hg_chi = hg.non_negative("chi", 0.0);
+        if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
+        hg.finish();
+      } else {
+        b.optional("hourglass");
       }
       b.finish();
       // The body must lie inside the domain.
@@ -329,6 +388,10 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
                                         ", " + std::to_string(s.domain_max[a]) + "])");
       s.bodies.push_back(std::move(body));
     }
+    // A solid body needs the solid module: switch it on.
+    for (const auto& body : s.bodies)
+      if (body.phase == "solid" && std::find(s.modules.begin(), s.modules.end(), "solid") == s.modules.end())
+        s.modules.push_back("solid");
   }
 
   if (r.has("boundary_conditions")) {
@@ -401,15 +464,15 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     auto list = pr.node("list");
     if (!list.IsSequence()) scene_error("probes.list", "expected a list of probes");
     static const std::vector<std::string> types = {
-        "kinetic_energy", "total_mass", "momentum", "abs_momentum", "max_speed", "min_distance",
-        "integral",       "mean",       "value_at", "reaction_force"};
+        "kinetic_energy", "elastic_energy", "disorder", "total_mass", "momentum", "abs_momentum", "max_speed", "min_distance",
+        "integral",       "mean",       "value_at", "tracked", "reaction_force"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
       ProbeSpec ps;
       ps.name = q.text("name");
       ps.type = q.choice("type", types);
-      if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at") {
+      if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at" || ps.type == "tracked") {
         ps.field = q.text("field");
         auto dot = ps.field.find('.');
         if (dot != std::string::npos) {
@@ -425,7 +488,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       ps.weight_expr = q.text("weight", "");
       if (!ps.weight_expr.empty()) check_expression(ps.weight_expr, q.at("weight"));
       ps.body = q.text("body", "");
-      if (ps.type == "value_at") ps.point = q.vector("point", dim);
+      if (ps.type == "value_at" || ps.type == "tracked") ps.point = q.vector("point", dim);
       else q.optional("point");
       if (ps.type == "reaction_force") {
         bool found = false;
@@ -454,7 +517,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       rs.name = q.text("name");
       rs.value = q.number("value");
       rs.probe = q.text("probe");
-      rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max", "min", "mean"});
+      rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max", "min", "mean",
+                                          "peak_ratio"});
       rs.start = q.non_negative("start", 0.0);
       bool found = false;
       for (const auto& ps : s.probes) found = found || ps.name == rs.probe;

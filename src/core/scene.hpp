@@ -46,6 +46,9 @@ struct BodySpec {
   std::string density_expr;               // initial density (default rho0)
   std::vector<std::string> velocity_expr;  // initial velocity components
   double av_alpha = 0, av_beta = 0;        // artificial viscosity (MMB Eq. 17-18)
+  double as_epsilon = 0, as_n = 4;         // artificial stress (MMB Eq. 19-20)
+  double delta = 0;                        // density diffusion (MMB Eq. 21)
+  double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
 };
 
 struct BoundarySpec {

@@ -23,7 +23,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
   for (const auto& b : scene_.bodies)
     bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha,
-                       b.av_beta});
+                       b.av_beta, b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi});
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   if (!scene_.boundaries.empty()) {
     kbc_ = p_.add_field("boundary", 1, FieldType::Int, false);
@@ -136,6 +136,7 @@ void Simulation<D>::create_particles() {
         throw InputError("boundary_conditions[" + std::to_string(k) + "]: selects no particle");
     }
   }
+  for (auto& m : modules_) m->on_create(*this);
 }
 
 template <int D>
@@ -153,6 +154,7 @@ void Simulation<D>::update_neighbours() {
   if (!rebuild_requested_ && !nb_.needs_rebuild(p_)) return;
   rebuild_requested_ = false;
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
+  for (auto& m : modules_) m->before_rebuild(*this);
   long bad = nb_.build(p_, reorder);
   if (bad >= 0) {
     std::ostringstream os;

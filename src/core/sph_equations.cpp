@@ -18,9 +18,9 @@ Mat<D> invert_correction(const Mat<D>& b) {
   Eigen::SelfAdjointEigenSolver<M> es;
   es.computeDirect(bs);
   auto lam = es.eigenvalues();
-  if (lam.minCoeff() >= 0.05) return Mat<D>(M(b).inverse());
+  if (lam.minCoeff() >= 0.02) return Mat<D>(M(b).inverse());
   Eigen::Matrix<double, D, 1> inv;
-  for (int k = 0; k < D; ++k) inv[k] = lam[k] >= 0.05 ? 1.0 / lam[k] : 1.0;
+  for (int k = 0; k < D; ++k) inv[k] = lam[k] >= 0.02 ? 1.0 / lam[k] : 1.0;
   return Mat<D>(es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose());
 }
 
@@ -81,20 +81,35 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   auto corr = p.template view<Mat<D>>(kcorr_);
   std::span<Mat<D>> gradv;
   if (kgradv_ >= 0) gradv = p.template view<Mat<D>>(kgradv_);
+  const auto& bodies = sim.bodies();
+  const auto& mats = sim.materials();
+  auto mt = p.material();
+  bool diffusion = false;
+  for (const auto& b : bodies) diffusion = diffusion || b.delta > 0;
+  const double h = sim.kernel().h();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const auto gi = group(ph[i], bd[i]);
     Mat<D> g = Mat<D>::Zero();
+    double diff = 0;
+    const double di = bodies[bd[i]].delta, ci = mats[mt[i]].sound_speed();
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
       if (group(ph[j], bd[j]) != gi) continue;
       const Vec<D> r = nb.rij(x[i], x[j], k);
-      const double vf = m[j] / rho[j] * W.f(r.norm());
-      g.noalias() += (v[j] - v[i]) * (vf * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
+      const double fr = W.f(r.norm());
+      const double vj = m[j] / rho[j];
+      g.noalias() += (v[j] - v[i]) * (vj * fr * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
+      if (diffusion) {
+        // MMB Eq. 21: Psi_ij . grad W_ij = 2 delta h c (rho_j - rho_i)/rho_i (x_j - x_i).(F r)/r^2
+        const double delta = 0.5 * (di + bodies[bd[j]].delta);
+        const double c = 0.5 * (ci + mats[mt[j]].sound_speed());
+        diff += vj * 2.0 * delta * h * c * (rho[j] - rho[i]) * (-fr);
+      }
     }
     g = g * corr[i].transpose();  // corrected gradient: grad~W = L grad W (MMB Eq. 7, 16)
-    drho[i] = -rho[i] * g.trace();  // MMB Eq. 11 (continuity)
+    drho[i] = -rho[i] * g.trace() + diff;  // MMB Eq. 11 (continuity + density diffusion)
     if (kgradv_ >= 0) gradv[i] = g;
   }
 }
@@ -132,6 +147,10 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   if (kstress_ < 0) kstress_ = p.find("deviatoric_stress");
   std::span<Mat3> dev;
   if (kstress_ >= 0) dev = p.template view<Mat3>(kstress_);
+  if (kas_ < 0) kas_ = p.find("artificial_stress");
+  std::span<Mat<D>> art;
+  if (kas_ >= 0) art = p.template view<Mat<D>>(kas_);
+  const double wdp = W.w(sim.dp());
   const auto& mats = sim.materials();
   const auto& bodies = sim.bodies();
   const double h = W.h(), eta2 = 0.01 * h * h;
@@ -164,6 +183,9 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
       const Vec<D> gw = W.f(rr) * r;  // grad_i W_ij
       // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij
       Vec<D> f = (sig[i] + sig[j]) * gw;
+      // MMB Eq. 11, 19-20: artificial stress eps R f_ij^n (art = eps R / (rho^2 S), same body).
+      if (kas_ >= 0 && bodies[bd[i]].as_epsilon > 0)
+        f -= std::pow(W.w(rr) / wdp, bodies[bd[i]].as_n) * ((art[i] + art[j]) * gw);
       // MMB Eq. 17-18: artificial viscosity, only for approaching pairs.
       const double vr = (v[i] - v[j]).dot(r);
       const double alpha = 0.5 * (ai + bodies[bd[j]].av_alpha);

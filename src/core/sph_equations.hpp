@@ -19,14 +19,14 @@ class SphEquations : public Module<D> {
   void forces(Simulation<D>& sim) override;
 
  private:
-  int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1;
+  int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1, kas_ = -1;
   std::vector<double> rmin_;  // scratch buffers of the force pass
   std::vector<int> jmin_;
   std::vector<Mat<D>> sig_;
 };
 
 // Correction matrix L_i = [sum_j V_j (x_j - x_i) (x) grad_i W_ij]^-1 (MMB Eq. 9). Directions with
-// too little support (eigenvalue < 0.05 of a full one) are left uncorrected.
+// too little support (eigenvalue < 0.02 of a full one) are left uncorrected.
 template <int D>
 Mat<D> invert_correction(const Mat<D>& b);
 

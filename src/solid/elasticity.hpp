@@ -1,0 +1,31 @@
+#pragma once
+// Hypoelastic deviatoric stress with the Jaumann rate (MMB Eq. 14-16), plane strain in 2D: the
+// full 3x3 deviator is carried, the velocity gradient is padded with zeros (D_zz = 0).
+#include "core/types.hpp"
+
+namespace monosph {
+
+// Pads a DxD velocity gradient to 3x3.
+template <int D>
+inline Mat3 pad33(const Mat<D>& g) {
+  Mat3 r = Mat3::Zero();
+  r.template topLeftCorner<D, D>() = g;
+  return r;
+}
+
+// dS/dt = 2 mu (Edot - tr(Edot)/3 I) + Omega S - S Omega   (MMB Eq. 14-15; L = grad v, row = v)
+inline Mat3 jaumann_rate(const Mat3& S, const Mat3& L, double mu) {
+  const Mat3 e = 0.5 * (L + L.transpose());
+  const Mat3 w = 0.5 * (L - L.transpose());
+  return 2.0 * mu * (e - e.trace() / 3.0 * Mat3::Identity()) + w * S - S * w;
+}
+
+// von Mises equivalent stress sqrt(3/2 S:S) (MMB Eq. 22).
+inline double von_mises(const Mat3& S) { return std::sqrt(1.5 * S.cwiseProduct(S).sum()); }
+
+// Artificial stress tensor R (MMB Eq. 19-20): the tensile principal part of Sigma,
+// R = Q diag(max(sigma_a, 0)) Q^T with the eigenvectors of Sigma as columns of Q.
+template <int D>
+Mat<D> tensile_part(const Mat<D>& sigma);
+
+}  // namespace monosph

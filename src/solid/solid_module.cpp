@@ -1,0 +1,269 @@
+#include "solid_module.hpp"
+
+#include <cmath>
+
+#include "core/sph_equations.hpp"
+#include "elasticity.hpp"
+
+namespace monosph {
+
+namespace {
+inline bool is_solid(std::int64_t ph) { return ph == kSolid; }
+}  // namespace
+
+template <int D>
+SolidModule<D>::SolidModule(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  kS_ = p.add_field("deviatoric_stress", 9);
+  kvm_ = p.add_field("von_mises", 1, FieldType::Real, true);
+  kX0_ = p.add_field("initial_position", D);
+  kF_ = p.add_field("deformation_gradient", D * D);
+  kFinit_ = p.add_field("reference_deformation", D * D);
+  kdis_ = p.add_field("disorder", 1, FieldType::Real, true);
+  kgradv_ = p.add_field("velocity_gradient", D * D);
+  for (const auto& b : sim.bodies()) any_as_ = any_as_ || b.as_epsilon > 0;
+  if (any_as_) kas_ = p.add_field("artificial_stress", D * D);
+  const auto& dom = sim.neighbours().domain();
+  box_ = dom.length();
+  periodic_ = dom.periodic;
+}
+
+template <int D>
+void SolidModule<D>::on_create(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto X0 = p.template view<Vec<D>>(kX0_);
+  auto Fi = p.template view<Mat<D>>(kFinit_);
+  auto F = p.template view<Mat<D>>(kF_);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    X0[i] = x[i];
+    Fi[i] = Mat<D>::Identity();
+    F[i] = Mat<D>::Identity();
+  }
+}
+
+template <int D>
+Vec<D> SolidModule<D>::initial_difference(const Vec<D>& a, const Vec<D>& b) const {
+  Vec<D> d = a - b;
+  for (int k = 0; k < D; ++k)
+    if (periodic_[k]) d[k] -= box_[k] * std::round(d[k] / box_[k]);
+  return d;
+}
+
+template <int D>
+void SolidModule<D>::rates(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto mt = p.material();
+  auto S = p.template view<Mat3>(kS_);
+  auto L = p.template view<Mat<D>>(kgradv_);
+  const auto& mats = sim.materials();
+  const std::size_t n = p.size();
+  dS_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    dS_[i] = jaumann_rate(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus);  // MMB Eq. 14
+  }
+}
+
+template <int D>
+void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto S = p.template view<Mat3>(kS_);
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (is_solid(ph[i])) S[i] += dt * dS_[i];
+}
+
+template <int D>
+void SolidModule<D>::constitutive(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto bd = p.body();
+  auto rho = p.rho();
+  auto pr = p.p();
+  auto S = p.template view<Mat3>(kS_);
+  auto vm = p.template view<double>(kvm_);
+  std::span<Mat<D>> art;
+  std::span<double> shep;
+  if (any_as_) {
+    art = p.template view<Mat<D>>(kas_);
+    shep = p.template view<double>("shepard");
+  }
+  const auto& bodies = sim.bodies();
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    vm[i] = von_mises(S[i]);
+    if (any_as_) {
+      const double eps = bodies[bd[i]].as_epsilon;
+      if (eps > 0) {
+        // MMB Eq. 19-20: eps R_i, divided by rho^2 S as the stress term it corrects.
+        const Mat<D> sigma = Mat<D>(S[i].template topLeftCorner<D, D>()) - pr[i] * Mat<D>::Identity();
+        art[i] = eps * tensile_part<D>(sigma) / (rho[i] * rho[i] * shep[i]);
+      } else {
+        art[i].setZero();
+      }
+    }
+  }
+}
+
+template <int D>
+void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto ph = p.phase();
+  auto F = p.template view<Mat<D>>(kF_);
+  auto Fi = p.template view<Mat<D>>(kFinit_);
+  const std::size_t n = p.size();
+  if (rstart_.size() != n + 1) return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    // F_ref = I + sum_j (u_j - u_i) (x) g_ij = sum_j (x_j - x_i) (x) g_ij, because
+    // sum_j (X_j - X_i) (x) g_ij = I by construction of the correction (MMB Eq. 28).
+    Mat<D> fr = Mat<D>::Zero();
+    for (std::size_t k = rstart_[i]; k < rstart_[i + 1]; ++k)
+      fr.noalias() += (x[rj_[k]] + rshift_[k] - x[i]) * rg_[k].transpose();
+    F[i] = fr * Fi[i];  // MMB Eq. 30
+  }
+}
+
+template <int D>
+void SolidModule<D>::sums(Simulation<D>& sim) { compute_deformation_gradient(sim); }
+
+template <int D>
+void SolidModule<D>::before_rebuild(Simulation<D>& sim) {
+  // The reference configuration moves to the current one: F_init <- F (MMB Eq. 30).
+  if (rstart_.size() != sim.particles().size() + 1) return;
+  compute_deformation_gradient(sim);
+  auto& p = sim.particles();
+  auto F = p.template view<Mat<D>>(kF_);
+  auto Fi = p.template view<Mat<D>>(kFinit_);
+  for (std::size_t i = 0; i < p.size(); ++i) Fi[i] = F[i];
+}
+
+template <int D>
+void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& nb = sim.neighbours();
+  const auto& W = sim.kernel();
+  auto x = p.x();
+  auto m = p.m();
+  auto rho = p.rho();
+  auto ph = p.phase();
+  auto bd = p.body();
+  const std::size_t n = p.size();
+  const double rc = W.radius();
+  // Reference pairs: same solid body, within the kernel support in the reference configuration.
+  rstart_.assign(n + 1, 0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t c = 0;
+    if (is_solid(ph[i]))
+      for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+        const int j = nb.nbr(k);
+        if (bd[j] == bd[i] && nb.rij(x[i], x[j], k).norm() < rc) ++c;
+      }
+    rstart_[i + 1] = c;
+  }
+  for (std::size_t i = 0; i < n; ++i) rstart_[i + 1] += rstart_[i];
+  rj_.resize(rstart_[n]);
+  rshift_.resize(rstart_[n]);
+  rg_.resize(rstart_[n]);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    std::size_t q = rstart_[i];
+    Mat<D> b = Mat<D>::Zero();
+    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.nbr(k);
+      const Vec<D> r = nb.rij(x[i], x[j], k);
+      const double rr = r.norm();
+      if (bd[j] != bd[i] || rr >= rc) continue;
+      const double vj = m[j] / rho[j];  // volume at the reference time
+      rj_[q] = j;
+      rshift_[q] = nb.shift(k);
+      rg_[q] = vj * W.f(rr) * r;  // V_j grad W(X_ij), corrected below
+      b.noalias() -= (vj * W.f(rr)) * (r * r.transpose());
+      ++q;
+    }
+    const Mat<D> lref = invert_correction<D>(b);  // MMB Eq. 9 in the reference configuration
+    for (std::size_t k = rstart_[i]; k < rstart_[i + 1]; ++k) rg_[k] = lref * rg_[k];
+  }
+  // F_ref = I now: F = F_init.
+  auto F = p.template view<Mat<D>>(kF_);
+  auto Fi = p.template view<Mat<D>>(kFinit_);
+  for (std::size_t i = 0; i < n; ++i) F[i] = Fi[i];
+}
+
+template <int D>
+void SolidModule<D>::forces(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& nb = sim.neighbours();
+  const auto& W = sim.kernel();
+  auto x = p.x();
+  auto v = p.v();
+  auto a = p.a();
+  auto m = p.m();
+  auto rho = p.rho();
+  auto ph = p.phase();
+  auto bd = p.body();
+  auto mt = p.material();
+  auto F = p.template view<Mat<D>>(kF_);
+  auto X0 = p.template view<Vec<D>>(kX0_);
+  auto dis = p.template view<double>(kdis_);
+  const auto& bodies = sim.bodies();
+  const auto& mats = sim.materials();
+  const double h = W.h(), rc = W.radius(), eta2 = 0.01 * h * h;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    const BodyInfo& b = bodies[bd[i]];
+    const Material& mat = mats[mt[i]];
+    const double E = 9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
+    const double cs = mat.sound_speed();
+    const double vi = m[i] / rho[i];
+    const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
+    Vec<D> f = Vec<D>::Zero();
+    double num = 0, den = 0;
+    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.nbr(k);
+      if (bd[j] != bd[i]) continue;
+      const Vec<D> d = -nb.rij(x[i], x[j], k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
+      const double r = d.norm();
+      if (r >= rc) continue;
+      const double w = W.w(r);
+      const Vec<D> X = initial_difference(X0[j], X0[i]);
+      const double Xn = X.norm();
+      const Vec<D> eps = 0.5 * (Mat<D>(F[i]) + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
+      num += w * eps.squaredNorm();
+      den += w;
+      if (!hg) continue;
+      const Vec<D> e = d / r;
+      const double ed = eps.dot(e);
+      // MMB Eq. 32: stiffness-based force along the current pair direction.
+      const Vec<D> fs = (-b.hg_xi * vi * (m[j] / rho[j]) * w * E / (Xn * Xn) * ed) * e;
+      // MMB Eq. 33: viscous force, only when the relative motion increases the error.
+      Vec<D> fv = Vec<D>::Zero();
+      const double vr = (v[j] - v[i]).dot(d);
+      if (b.hg_zeta > 0 && vr * ed < 0) {
+        const double rbar = 0.5 * (rho[i] + rho[j]);
+        fv = (-b.hg_zeta * m[i] * m[j] / rbar * eps.norm() / Xn * cs * h * vr / (r * r + eta2) * W.f(r)) * d;
+      }
+      f += b.hg_chi * fv + (1 - b.hg_chi) * fs;  // MMB Eq. 34
+    }
+    a[i] += f / m[i];
+    dis[i] = den > 0 ? std::sqrt(num / den) / sim.dp() : 0.0;
+  }
+}
+
+template class SolidModule<2>;
+template class SolidModule<3>;
+
+}  // namespace monosph

@@ -1,0 +1,45 @@
+#pragma once
+// Hourglass-controlled Eulerian SPH solids (Mohseni-Mofidi & Bierwisch 2020, "MMB", Sect. 2).
+// Jaumann-rate hypoelasticity (Eq. 14-16), artificial stress tensor (Eq. 19-20), deformation
+// gradient with an intermediate reference configuration (Eq. 28-30), error vector (Eq. 31) and
+// the stiffness, viscous and combined hourglass forces (Eq. 32-34). The momentum and continuity
+// equations with Sigma = -p I + S are the shared SphEquations (core).
+#include <vector>
+
+#include "core/simulation.hpp"
+
+namespace monosph {
+
+template <int D>
+class SolidModule : public Module<D> {
+ public:
+  explicit SolidModule(Simulation<D>& sim);
+  std::string name() const override { return "solid"; }
+  void on_create(Simulation<D>& sim) override;
+  void rates(Simulation<D>& sim) override;
+  void drift(Simulation<D>& sim, double dt) override;
+  void constitutive(Simulation<D>& sim) override;
+  void sums(Simulation<D>& sim) override;
+  void forces(Simulation<D>& sim) override;
+  void before_rebuild(Simulation<D>& sim) override;
+  void on_rebuild(Simulation<D>& sim) override;
+
+  // Deformation gradient F = F_ref F_init at the current positions (MMB Eq. 28-30).
+  void compute_deformation_gradient(Simulation<D>& sim);
+
+ private:
+  Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
+
+  int kS_, kvm_, kX0_, kF_, kFinit_, kdis_, kgradv_, kas_ = -1;
+  bool any_as_ = false;
+  std::vector<Mat3> dS_;  // stress rate between rates() and drift()
+  // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
+  // g_ij = V_j L_ref,i grad W(X_ij) in the reference configuration.
+  std::vector<std::size_t> rstart_;
+  std::vector<int> rj_;
+  std::vector<Vec<D>> rshift_, rg_;
+  Vec<D> box_;
+  std::array<bool, D> periodic_{};
+};
+
+}  // namespace monosph
