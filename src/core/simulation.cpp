@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <unordered_map>
@@ -214,7 +215,40 @@ void Simulation<D>::drift(double dt) {
 }
 
 template <int D>
+void Simulation<D>::update_pair_cache() {
+  auto x = p_.x();
+  auto ph = p_.phase();
+  auto bd = p_.body();
+  const std::size_t n = p_.size();
+  pw_.resize(nb_.pairs());
+  pf_.resize(nb_.pairs());
+  group_.resize(n);
+  rmin_.resize(n);
+  jmin_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    group_[i] = ph[i] == kFluid ? -1 : static_cast<int>(bd[i]);
+    double best = std::numeric_limits<double>::infinity();
+    int jb = -1;
+    for (std::size_t k = nb_.begin(i); k < nb_.end(i); ++k) {
+      const int j = nb_.nbr(k);
+      const double r = nb_.rij(x[i], x[j], k).norm();
+      pw_[k] = kernel_.w(r);
+      pf_[k] = kernel_.f(r);
+      if (r < best) best = r, jb = j;
+    }
+    rmin_[i] = best;
+    jmin_[i] = jb;
+  }
+  min_r_ = std::numeric_limits<double>::infinity();
+  min_i_ = min_j_ = -1;
+  for (std::size_t i = 0; i < n; ++i)
+    if (rmin_[i] < min_r_) min_r_ = rmin_[i], min_i_ = static_cast<long>(i), min_j_ = jmin_[i];
+}
+
+template <int D>
 void Simulation<D>::compute_forces() {
+  update_pair_cache();
   for (auto& m : modules_) m->sums(*this);
   for (auto& m : modules_) m->constitutive(*this);
   auto a = p_.a();
@@ -258,6 +292,7 @@ void Simulation<D>::init(bool restarted) {
   if (restarted) {
     rebuild_requested_ = true;
     update_neighbours();
+    update_pair_cache();
     if (dt_ <= 0) dt_ = compute_dt();
     dt0_ = dt_;
     return;

@@ -76,8 +76,13 @@ class Simulation {
   void set_state(double t, long step, double dt) { t_ = t, step_ = step, dt_ = dt; }
 
   // Smallest pair distance seen in the last force pass (set by the pair-force module).
-  void set_min_distance(double r, long i, long j) { min_r_ = r, min_i_ = i, min_j_ = j; }
   double min_distance() const { return min_r_; }
+  // Kernel values per Verlet pair at the current positions, valid from the force evaluation of a
+  // step until the next drift: W(r_k) and F(r_k) = W'(r_k)/r_k (zero beyond the support).
+  const std::vector<double>& pair_w() const { return pw_; }
+  const std::vector<double>& pair_f() const { return pf_; }
+  // Interaction group of each particle: -1 for fluid (one continuum), the body for solids.
+  const std::vector<int>& group() const { return group_; }
   // Reaction force of each boundary-condition set (force the constraint applies), last step.
   const std::vector<V>& reactions() const { return reactions_; }
   const std::vector<BoundarySpec>& boundaries() const { return scene_.boundaries; }
@@ -89,6 +94,7 @@ class Simulation {
   void drift(double dt);
   void update_neighbours();
   void compute_forces();
+  void update_pair_cache();
   double compute_dt();
   void check_guards();
   void apply_bc_velocity(double t);
@@ -106,6 +112,8 @@ class Simulation {
   double t_ = 0, dt_ = 0, dt0_ = 0;
   long step_ = 0;
   double min_r_ = 0;
+  std::vector<double> pw_, pf_, rmin_;
+  std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;
   bool rebuild_requested_ = false;
 };

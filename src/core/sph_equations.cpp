@@ -1,24 +1,23 @@
 #include "sph_equations.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace monosph {
 
-namespace {
-// Fluid particles form one continuum; each solid body is its own.
-inline std::int64_t group(std::int64_t phase, std::int64_t body) {
-  return phase == kFluid ? -1 : body;
-}
-}  // namespace
-
 template <int D>
 Mat<D> invert_correction(const Mat<D>& b) {
   using M = Eigen::Matrix<double, D, D>;
-  M bs = 0.5 * (M(b) + M(b).transpose());
+  const M bs = 0.5 * (M(b) + M(b).transpose());
+  if constexpr (D == 2) {  // closed-form eigenvalues of a symmetric 2x2 matrix
+    const double t = 0.5 * bs.trace(), det = bs.determinant();
+    const double lmin = t - std::sqrt(std::max(0.0, t * t - det));
+    if (lmin >= 0.02) return Mat<D>(bs.inverse());
+  }
   Eigen::SelfAdjointEigenSolver<M> es;
   es.computeDirect(bs);
   auto lam = es.eigenvalues();
-  if (lam.minCoeff() >= 0.02) return Mat<D>(M(b).inverse());
+  if (lam.minCoeff() >= 0.02) return Mat<D>(bs.inverse());
   Eigen::Matrix<double, D, 1> inv;
   for (int k = 0; k < D; ++k) inv[k] = lam[k] >= 0.02 ? 1.0 / lam[k] : 1.0;
   return Mat<D>(es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose());
@@ -30,38 +29,43 @@ SphEquations<D>::SphEquations(Simulation<D>& sim, bool store_velocity_gradient) 
   kshep_ = p.add_field("shepard", 1);
   kcorr_ = p.add_field("correction", D * D);
   if (store_velocity_gradient) kgradv_ = p.add_field("velocity_gradient", D * D);
+  for (const auto& b : sim.bodies()) {
+    any_av_ = any_av_ || b.av_alpha > 0 || b.av_beta > 0;
+    any_diffusion_ = any_diffusion_ || b.delta > 0;
+  }
 }
 
 template <int D>
 void SphEquations<D>::sums(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& nb = sim.neighbours();
-  const auto& W = sim.kernel();
+  const auto& pw = sim.pair_w();
+  const auto& pf = sim.pair_f();
+  const auto& grp = sim.group();
   auto x = p.x();
   auto m = p.m();
   auto rho = p.rho();
-  auto ph = p.phase();
-  auto bd = p.body();
   auto shep = p.template view<double>(kshep_);
   auto corr = p.template view<Mat<D>>(kcorr_);
-  const double w0 = W.w(0.0);
+  const double w0 = sim.kernel().w(0.0);
   const std::size_t n = p.size();
+  vol_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) vol_[i] = m[i] / rho[i];
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const auto gi = group(ph[i], bd[i]);
-    double s = m[i] / rho[i] * w0;
+    const int gi = grp[i];
+    double s = vol_[i] * w0;
     Mat<D> b = Mat<D>::Zero();
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
-      if (group(ph[j], bd[j]) != gi) continue;
+      if (grp[j] != gi || pw[k] == 0.0) continue;
       const Vec<D> r = nb.rij(x[i], x[j], k);
-      const double rr = r.norm();
-      const double vj = m[j] / rho[j];
-      s += vj * W.w(rr);
+      s += vol_[j] * pw[k];
       // (x_j - x_i) (x) grad_i W_ij = (-r) (x) (F r)   (MMB Eq. 9)
-      b.noalias() -= (vj * W.f(rr)) * (r * r.transpose());
+      b.noalias() -= (vol_[j] * pf[k]) * (r * r.transpose());
     }
-    shep[i] = s;
+    shep[i] = s;  // Shepard sum, denominator of the normalised gradient (MMB Eq. 10)
     corr[i] = invert_correction<D>(b);
   }
 }
@@ -70,42 +74,43 @@ template <int D>
 void SphEquations<D>::rates(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& nb = sim.neighbours();
-  const auto& W = sim.kernel();
+  const auto& pf = sim.pair_f();
+  const auto& grp = sim.group();
   auto x = p.x();
   auto v = p.v();
   auto m = p.m();
   auto rho = p.rho();
   auto drho = p.drho();
-  auto ph = p.phase();
-  auto bd = p.body();
   auto corr = p.template view<Mat<D>>(kcorr_);
   std::span<Mat<D>> gradv;
   if (kgradv_ >= 0) gradv = p.template view<Mat<D>>(kgradv_);
   const auto& bodies = sim.bodies();
   const auto& mats = sim.materials();
   auto mt = p.material();
-  bool diffusion = false;
-  for (const auto& b : bodies) diffusion = diffusion || b.delta > 0;
+  auto bd = p.body();
   const double h = sim.kernel().h();
   const std::size_t n = p.size();
+  if (any_diffusion_) {
+    cs_.resize(n);
+    delta_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) cs_[i] = mats[mt[i]].sound_speed(), delta_[i] = bodies[bd[i]].delta;
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const auto gi = group(ph[i], bd[i]);
+    const int gi = grp[i];
     Mat<D> g = Mat<D>::Zero();
     double diff = 0;
-    const double di = bodies[bd[i]].delta, ci = mats[mt[i]].sound_speed();
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
-      if (group(ph[j], bd[j]) != gi) continue;
+      if (grp[j] != gi || pf[k] == 0.0) continue;
       const Vec<D> r = nb.rij(x[i], x[j], k);
-      const double fr = W.f(r.norm());
       const double vj = m[j] / rho[j];
-      g.noalias() += (v[j] - v[i]) * (vj * fr * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
-      if (diffusion) {
+      g.noalias() += (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
+      if (any_diffusion_) {
         // MMB Eq. 21: Psi_ij . grad W_ij = 2 delta h c (rho_j - rho_i)/rho_i (x_j - x_i).(F r)/r^2
-        const double delta = 0.5 * (di + bodies[bd[j]].delta);
-        const double c = 0.5 * (ci + mats[mt[j]].sound_speed());
-        diff += vj * 2.0 * delta * h * c * (rho[j] - rho[i]) * (-fr);
+        const double delta = 0.5 * (delta_[i] + delta_[j]);
+        const double c = 0.5 * (cs_[i] + cs_[j]);
+        diff -= vj * 2.0 * delta * h * c * (rho[j] - rho[i]) * pf[k];
       }
     }
     g = g * corr[i].transpose();  // corrected gradient: grad~W = L grad W (MMB Eq. 7, 16)
@@ -134,13 +139,15 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& nb = sim.neighbours();
   const auto& W = sim.kernel();
+  const auto& pw = sim.pair_w();
+  const auto& pf = sim.pair_f();
+  const auto& grp = sim.group();
   auto x = p.x();
   auto v = p.v();
   auto a = p.a();
   auto m = p.m();
   auto rho = p.rho();
   auto pr = p.p();
-  auto ph = p.phase();
   auto bd = p.body();
   auto mt = p.material();
   auto shep = p.template view<double>(kshep_);
@@ -155,55 +162,52 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   const auto& bodies = sim.bodies();
   const double h = W.h(), eta2 = 0.01 * h * h;
   const std::size_t n = p.size();
-  rmin_.assign(n, std::numeric_limits<double>::infinity());
-  jmin_.assign(n, -1);
-  // Sigma_i / (rho_i^2 S_i), the per-particle factor of the normalised stress divergence.
   sig_.resize(n);
-  auto& rmin = rmin_;
-  auto& jmin = jmin_;
-  auto& sig = sig_;
+  if (any_av_) {
+    cs_.resize(n);
+    alpha_.resize(n);
+    beta_.resize(n);
+  }
+  // Sigma_i / (rho_i^2 S_i), the per-particle factor of the normalised stress divergence.
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Mat<D> s = -pr[i] * Mat<D>::Identity();
     if (kstress_ >= 0) s += dev[i].template topLeftCorner<D, D>();  // MMB Eq. 12
-    sig[i] = s / (rho[i] * rho[i] * shep[i]);
+    sig_[i] = s / (rho[i] * rho[i] * shep[i]);
+    if (any_av_) {
+      cs_[i] = mats[mt[i]].sound_speed();
+      alpha_[i] = bodies[bd[i]].av_alpha;
+      beta_[i] = bodies[bd[i]].av_beta;
+    }
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const auto gi = group(ph[i], bd[i]);
-    const double ci = mats[mt[i]].sound_speed();
-    const double ai = bodies[bd[i]].av_alpha, bi = bodies[bd[i]].av_beta;
+    const int gi = grp[i];
+    const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
     Vec<D> acc = Vec<D>::Zero();
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
+      if (grp[j] != gi || pf[k] == 0.0) continue;
       const Vec<D> r = nb.rij(x[i], x[j], k);
-      const double rr = r.norm();
-      if (rr < rmin[i]) rmin[i] = rr, jmin[i] = j;
-      if (group(ph[j], bd[j]) != gi) continue;
-      const Vec<D> gw = W.f(rr) * r;  // grad_i W_ij
+      const Vec<D> gw = pf[k] * r;  // grad_i W_ij
       // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij
-      Vec<D> f = (sig[i] + sig[j]) * gw;
+      Mat<D> sum = sig_[i] + sig_[j];
       // MMB Eq. 11, 19-20: artificial stress eps R f_ij^n (art = eps R / (rho^2 S), same body).
-      if (kas_ >= 0 && bodies[bd[i]].as_epsilon > 0)
-        f -= std::pow(W.w(rr) / wdp, bodies[bd[i]].as_n) * ((art[i] + art[j]) * gw);
-      // MMB Eq. 17-18: artificial viscosity, only for approaching pairs.
-      const double vr = (v[i] - v[j]).dot(r);
-      const double alpha = 0.5 * (ai + bodies[bd[j]].av_alpha);
-      const double beta = 0.5 * (bi + bodies[bd[j]].av_beta);
-      if (vr < 0 && alpha + beta > 0) {
-        const double cbar = 0.5 * (ci + mats[mt[j]].sound_speed());
-        const double phi = h * vr / (rr * rr + eta2);
-        f += ((alpha * cbar - beta * phi) * phi / (0.5 * (rho[i] + rho[j]))) * gw;
+      if (kas_ >= 0 && as_eps > 0) sum -= std::pow(pw[k] / wdp, as_n) * (art[i] + art[j]);
+      Vec<D> f = sum * gw;
+      if (any_av_) {  // MMB Eq. 17-18: artificial viscosity, only for approaching pairs
+        const double vr = (v[i] - v[j]).dot(r);
+        if (vr < 0) {
+          const double alpha = 0.5 * (alpha_[i] + alpha_[j]), beta = 0.5 * (beta_[i] + beta_[j]);
+          const double cbar = 0.5 * (cs_[i] + cs_[j]);
+          const double phi = h * vr / (r.squaredNorm() + eta2);
+          f += ((alpha * cbar - beta * phi) * phi / (0.5 * (rho[i] + rho[j]))) * gw;
+        }
       }
       acc += m[j] * f;
     }
     a[i] += acc;
   }
-  double best = std::numeric_limits<double>::infinity();
-  long imin = -1;
-  for (std::size_t i = 0; i < n; ++i)
-    if (rmin[i] < best) best = rmin[i], imin = static_cast<long>(i);
-  if (imin >= 0) sim.set_min_distance(best, imin, jmin[imin]);
 }
 
 template class SphEquations<2>;

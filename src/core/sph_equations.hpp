@@ -20,8 +20,9 @@ class SphEquations : public Module<D> {
 
  private:
   int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1, kas_ = -1;
-  std::vector<double> rmin_;  // scratch buffers of the force pass
-  std::vector<int> jmin_;
+  bool any_av_ = false, any_diffusion_ = false;
+  // Per-particle scratch of the pair passes (volume, stress factor, AV and diffusion parameters).
+  std::vector<double> vol_, cs_, alpha_, beta_, delta_;
   std::vector<Mat<D>> sig_;
 };
 

@@ -205,7 +205,8 @@ template <int D>
 void SolidModule<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& nb = sim.neighbours();
-  const auto& W = sim.kernel();
+  const auto& pw = sim.pair_w();
+  const auto& pf = sim.pair_f();
   auto x = p.x();
   auto v = p.v();
   auto a = p.a();
@@ -219,7 +220,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   auto dis = p.template view<double>(kdis_);
   const auto& bodies = sim.bodies();
   const auto& mats = sim.materials();
-  const double h = W.h(), rc = W.radius(), eta2 = 0.01 * h * h;
+  const double h = sim.kernel().h(), eta2 = 0.01 * h * h;
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -230,33 +231,33 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const double cs = mat.sound_speed();
     const double vi = m[i] / rho[i];
     const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
+    const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi * E;
+    const double kvisc = -b.hg_zeta * b.hg_chi * m[i] * cs * h;
+    const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
     double num = 0, den = 0;
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
-      if (bd[j] != bd[i]) continue;
+      if (bd[j] != bd[i] || pw[k] == 0.0) continue;
       const Vec<D> d = -nb.rij(x[i], x[j], k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
-      const double r = d.norm();
-      if (r >= rc) continue;
-      const double w = W.w(r);
+      const double w = pw[k];
       const Vec<D> X = initial_difference(X0[j], X0[i]);
-      const double Xn = X.norm();
-      const Vec<D> eps = 0.5 * (Mat<D>(F[i]) + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
-      num += w * eps.squaredNorm();
+      const double X2 = X.squaredNorm();
+      const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
+      const double e2 = eps.squaredNorm();
+      num += w * e2;
       den += w;
       if (!hg) continue;
-      const Vec<D> e = d / r;
-      const double ed = eps.dot(e);
-      // MMB Eq. 32: stiffness-based force along the current pair direction.
-      const Vec<D> fs = (-b.hg_xi * vi * (m[j] / rho[j]) * w * E / (Xn * Xn) * ed) * e;
-      // MMB Eq. 33: viscous force, only when the relative motion increases the error.
-      Vec<D> fv = Vec<D>::Zero();
+      const double r2 = d.squaredNorm();
+      const double ed = eps.dot(d);  // (eps . x_ij), |x_ij| times the projection
+      // MMB Eq. 32: stiffness-based force along the current pair direction (1 - chi: Eq. 34).
+      f += (kstiff * (m[j] / rho[j]) * w / X2 * ed / r2) * d;
+      // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).
       const double vr = (v[j] - v[i]).dot(d);
-      if (b.hg_zeta > 0 && vr * ed < 0) {
+      if (kvisc != 0 && vr * ed < 0) {
         const double rbar = 0.5 * (rho[i] + rho[j]);
-        fv = (-b.hg_zeta * m[i] * m[j] / rbar * eps.norm() / Xn * cs * h * vr / (r * r + eta2) * W.f(r)) * d;
+        f += (kvisc * m[j] / rbar * std::sqrt(e2 / X2) * vr / (r2 + eta2) * pf[k]) * d;
       }
-      f += b.hg_chi * fv + (1 - b.hg_chi) * fs;  // MMB Eq. 34
     }
     a[i] += f / m[i];
     dis[i] = den > 0 ? std::sqrt(num / den) / sim.dp() : 0.0;
