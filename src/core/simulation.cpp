@@ -169,6 +169,7 @@ template <int D>
 void Simulation<D>::rebuild_neighbours() {
   rebuild_requested_ = true;
   update_neighbours();
+  update_pair_cache();  // pw_/pf_/group_ are indexed by the list just rebuilt (and reordered)
 }
 
 template <int D>
