@@ -20,6 +20,18 @@ inline Mat3 jaumann_rate(const Mat3& S, const Mat3& L, double mu) {
   return 2.0 * mu * (e - e.trace() / 3.0 * Mat3::Identity()) + w * S - S * w;
 }
 
+// Objective update of S over dt: the deviatoric rate of MMB Eq. 14 plus the Jaumann spin
+// terms, integrated with the Hughes-Winget rotation Q = (I - dt/2 W)^-1 (I + dt/2 W), which is
+// exactly orthogonal: a pure spin rotates S without changing its invariants.
+inline Mat3 update_deviatoric(const Mat3& S, const Mat3& L, double mu, double dt) {
+  const Eigen::Matrix3d e = 0.5 * (L + L.transpose());
+  const Eigen::Matrix3d w = 0.5 * (L - L.transpose());
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d q = (I - 0.5 * dt * w).inverse() * (I + 0.5 * dt * w);
+  const Eigen::Matrix3d s = Eigen::Matrix3d(S) + dt * 2.0 * mu * (e - e.trace() / 3.0 * I);
+  return Mat3(q * s * q.transpose());
+}
+
 // von Mises equivalent stress sqrt(3/2 S:S) (MMB Eq. 22).
 inline double von_mises(const Mat3& S) { return std::sqrt(1.5 * S.cwiseProduct(S).sum()); }
 

@@ -51,7 +51,8 @@ Vec<D> SolidModule<D>::initial_difference(const Vec<D>& a, const Vec<D>& b) cons
 }
 
 template <int D>
-void SolidModule<D>::rates(Simulation<D>& sim) {
+void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
+  // S_{n+1} from the velocity gradient of the half-step velocities (SphEquations::rates).
   auto& p = sim.particles();
   auto ph = p.phase();
   auto mt = p.material();
@@ -59,23 +60,9 @@ void SolidModule<D>::rates(Simulation<D>& sim) {
   auto L = p.template view<Mat<D>>(kgradv_);
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
-  dS_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!is_solid(ph[i])) continue;
-    dS_[i] = jaumann_rate(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus);  // MMB Eq. 14
-  }
-}
-
-template <int D>
-void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
-  auto& p = sim.particles();
-  auto ph = p.phase();
-  auto S = p.template view<Mat3>(kS_);
-  const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    if (is_solid(ph[i])) S[i] += dt * dS_[i];
+    if (is_solid(ph[i])) S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
 }
 
 template <int D>

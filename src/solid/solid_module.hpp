@@ -1,6 +1,6 @@
 #pragma once
 // Hourglass-controlled Eulerian SPH solids (Mohseni-Mofidi & Bierwisch 2020, "MMB", Sect. 2).
-// Jaumann-rate hypoelasticity (Eq. 14-16), artificial stress tensor (Eq. 19-20), deformation
+// Jaumann-rate hypoelasticity (Eq. 14-16, objective Hughes-Winget update), artificial stress tensor (Eq. 19-20), deformation
 // gradient with an intermediate reference configuration (Eq. 28-30), error vector (Eq. 31) and
 // the stiffness, viscous and combined hourglass forces (Eq. 32-34). The momentum and continuity
 // equations with Sigma = -p I + S are the shared SphEquations (core).
@@ -16,7 +16,6 @@ class SolidModule : public Module<D> {
   explicit SolidModule(Simulation<D>& sim);
   std::string name() const override { return "solid"; }
   void on_create(Simulation<D>& sim) override;
-  void rates(Simulation<D>& sim) override;
   void drift(Simulation<D>& sim, double dt) override;
   void constitutive(Simulation<D>& sim) override;
   void sums(Simulation<D>& sim) override;
@@ -32,7 +31,6 @@ class SolidModule : public Module<D> {
 
   int kS_, kvm_, kX0_, kF_, kFinit_, kdis_, kgradv_, kas_ = -1;
   bool any_as_ = false;
-  std::vector<Mat3> dS_;  // stress rate between rates() and drift()
   // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
   // g_ij = V_j L_ref,i grad W(X_ij) in the reference configuration.
   std::vector<std::size_t> rstart_;
