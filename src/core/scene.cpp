@@ -315,6 +315,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       for (const auto& other : s.bodies)
         if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
       body.phase = b.choice("phase", {"fluid", "solid"});
+      body.continuum = b.text("continuum", body.name);
       std::string mat = b.text("material");
       body.material = s.material_index(mat);
       if (body.material < 0) {
@@ -372,6 +373,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         body.hg_zeta = hg.non_negative("zeta", 0.0);
         body.hg_chi = hg.non_negative("chi", 0.0);
         if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
+        body.hg_intermediate = hg.choice("reference", {"initial", "intermediate"}, "initial") == "intermediate";
         hg.finish();
       } else {
         b.optional("hourglass");

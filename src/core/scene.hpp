@@ -39,6 +39,7 @@ struct Material {
 struct BodySpec {
   std::string name;
   std::string phase;  // fluid | solid
+  std::string continuum;  // solid bodies with the same continuum name interact as one body
   int material = 0;
   Shape shape;
   double jitter = 0;  // random displacement of lattice nodes, fraction of dp
@@ -49,6 +50,7 @@ struct BodySpec {
   double as_epsilon = 0, as_n = 4;         // artificial stress (MMB Eq. 19-20)
   double delta = 0;                        // density diffusion (MMB Eq. 21)
   double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
+  bool hg_intermediate = false;  // error vector against the last reference, not the initial state
 };
 
 struct BoundarySpec {

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -22,9 +23,17 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     dom.periodic[a] = scene_.periodic[a];
   }
   nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
-  for (const auto& b : scene_.bodies)
-    bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha,
-                       b.av_beta, b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi});
+  std::vector<std::string> continua;
+  for (const auto& b : scene_.bodies) {
+    int g = -1;
+    if (b.phase != "fluid") {
+      auto it = std::find(continua.begin(), continua.end(), b.continuum);
+      g = static_cast<int>(it - continua.begin());
+      if (it == continua.end()) continua.push_back(b.continuum);
+    }
+    bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha, b.av_beta,
+                       b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi, b.hg_intermediate, g});
+  }
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   if (!scene_.boundaries.empty()) {
     kbc_ = p_.add_field("boundary", 1, FieldType::Int, false);
@@ -228,7 +237,7 @@ void Simulation<D>::update_pair_cache() {
   jmin_.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    group_[i] = ph[i] == kFluid ? -1 : static_cast<int>(bd[i]);
+    group_[i] = bodies_[bd[i]].group;
     double best = std::numeric_limits<double>::infinity();
     int jb = -1;
     for (std::size_t k = nb_.begin(i); k < nb_.end(i); ++k) {

@@ -41,6 +41,8 @@ struct BodyInfo {
   double as_epsilon, as_n;   // artificial stress (MMB Eq. 19-20)
   double delta;              // density diffusion (MMB Eq. 21)
   double hg_xi, hg_zeta, hg_chi;  // hourglass control (MMB Eq. 32-34)
+  bool hg_intermediate;
+  int group = 0;  // interaction group: bodies of one continuum share it (-1: all fluid)
 };
 
 template <int D>
@@ -81,7 +83,8 @@ class Simulation {
   // step until the next drift: W(r_k) and F(r_k) = W'(r_k)/r_k (zero beyond the support).
   const std::vector<double>& pair_w() const { return pw_; }
   const std::vector<double>& pair_f() const { return pf_; }
-  // Interaction group of each particle: -1 for fluid (one continuum), the body for solids.
+  // Interaction group of each particle: -1 for fluid (one continuum); for solids, the body or
+  // the continuum several bodies share.
   const std::vector<int>& group() const { return group_; }
   // Reaction force of each boundary-condition set (force the constraint applies), last step.
   const std::vector<V>& reactions() const { return reactions_; }

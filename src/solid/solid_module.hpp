@@ -22,6 +22,7 @@ class SolidModule : public Module<D> {
   void forces(Simulation<D>& sim) override;
   void before_rebuild(Simulation<D>& sim) override;
   void on_rebuild(Simulation<D>& sim) override;
+  double max_dt(Simulation<D>& sim) override;
 
   // Deformation gradient F = F_ref F_init at the current positions (MMB Eq. 28-30).
   void compute_deformation_gradient(Simulation<D>& sim);
@@ -29,7 +30,7 @@ class SolidModule : public Module<D> {
  private:
   Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
 
-  int kS_, kvm_, kX0_, kF_, kFinit_, kdis_, kgradv_, kas_ = -1;
+  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1;
   bool any_as_ = false;
   // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
   // g_ij = V_j L_ref,i grad W(X_ij) in the reference configuration.
