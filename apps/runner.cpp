@@ -154,6 +154,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   }
   auto sample = [&] {
     if (!opt.write_output) return;
+    sim.diagnostics();
     auto row = probes.sample(sim);
     csv << fmt::format("{:.17g},{}", sim.time(), sim.step());
     for (double v : row) csv << fmt::format(",{:.17g}", v);
@@ -175,7 +176,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
 
   const double eps = 1e-12 * scene.end_time;
   if (!restart_meta) {
-    if (opt.write_output) vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+    if (opt.write_output) sim.diagnostics(), vtk->write(p, sim.time(), sim.step(), scene.output_fields);
     next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
     next_probe = scene.probe_every;
@@ -197,6 +198,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
         if (next_probe <= sim.time()) next_probe = sim.time();
       }
       if (opt.write_output && sim.time() >= next_output - eps) {
+        sim.diagnostics();
         vtk->write(p, sim.time(), sim.step(), scene.output_fields);
         next_output += scene.output_every > 0 ? scene.output_every : scene.end_time;
       }
@@ -213,6 +215,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     fmt::print(stderr, "\nmonosph: run stopped: {}\n", e.what());
     if (opt.write_output) {
       try {
+        sim.diagnostics();
         auto f = vtk->write(p, sim.time(), sim.step(), scene.output_fields);
         fmt::print(stderr, "monosph: last state written to {}\n", f.string());
       } catch (const std::exception& w) {

@@ -373,7 +373,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         body.hg_zeta = hg.non_negative("zeta", 0.0);
         body.hg_chi = hg.non_negative("chi", 0.0);
         if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
-        body.hg_intermediate = hg.choice("reference", {"initial", "intermediate"}, "initial") == "intermediate";
+        const std::string ref = hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
+        body.hg_reference = ref == "initial" ? 0 : ref == "intermediate" ? 1 : 2;
         hg.finish();
       } else {
         b.optional("hourglass");

@@ -50,7 +50,7 @@ struct BodySpec {
   double as_epsilon = 0, as_n = 4;         // artificial stress (MMB Eq. 19-20)
   double delta = 0;                        // density diffusion (MMB Eq. 21)
   double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
-  bool hg_intermediate = false;  // error vector against the last reference, not the initial state
+  int hg_reference = 0;  // error vector against: 0 initial (MMB), 1 intermediate, 2 least squares
 };
 
 struct BoundarySpec {

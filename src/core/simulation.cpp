@@ -32,7 +32,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
       if (it == continua.end()) continua.push_back(b.continuum);
     }
     bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha, b.av_beta,
-                       b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi, b.hg_intermediate, g});
+                       b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi, b.hg_reference, g});
   }
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   if (!scene_.boundaries.empty()) {

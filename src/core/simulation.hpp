@@ -29,6 +29,7 @@ class Module {
   virtual void constitutive(Simulation<D>&) {}         // per particle: EOS, stress
   virtual void forces(Simulation<D>&) {}               // add to the acceleration
   virtual void before_rebuild(Simulation<D>&) {}       // a rebuild follows (old list valid)
+  virtual void diagnostics(Simulation<D>&) {}          // fields for output and probes only
   virtual void on_rebuild(Simulation<D>&) {}           // after a neighbour-list rebuild
   virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
 };
@@ -41,7 +42,7 @@ struct BodyInfo {
   double as_epsilon, as_n;   // artificial stress (MMB Eq. 19-20)
   double delta;              // density diffusion (MMB Eq. 21)
   double hg_xi, hg_zeta, hg_chi;  // hourglass control (MMB Eq. 32-34)
-  bool hg_intermediate;
+  int hg_reference;  // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
   int group = 0;  // interaction group: bodies of one continuum share it (-1: all fluid)
 };
 
@@ -61,6 +62,10 @@ class Simulation {
   void advance(double stop = std::numeric_limits<double>::infinity());
   // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
   void rebuild_neighbours();
+  // Diagnostic fields (e.g. the disorder measure) before output or probes.
+  void diagnostics() {
+    for (auto& m : modules_) m->diagnostics(*this);
+  }
 
   // Accessors used by modules.
   Particles<D>& particles() { return p_; }

@@ -24,7 +24,11 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   kFinit_ = p.add_field("reference_deformation", D * D);
   kdis_ = p.add_field("disorder", 1, FieldType::Real, true);
   kgradv_ = p.add_field("velocity_gradient", D * D);
-  for (const auto& b : sim.bodies()) any_as_ = any_as_ || b.as_epsilon > 0;
+  for (const auto& b : sim.bodies()) {
+    any_as_ = any_as_ || b.as_epsilon > 0;
+    any_ls_ = any_ls_ || (b.phase == kSolid && b.hg_reference == 2);
+  }
+  if (any_ls_) kFls_ = p.add_field("fitted_deformation", D * D);
   if (any_as_) kas_ = p.add_field("artificial_stress", D * D);
   const auto& dom = sim.neighbours().domain();
   box_ = dom.length();
@@ -126,7 +130,60 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
 }
 
 template <int D>
-void SolidModule<D>::sums(Simulation<D>& sim) { compute_deformation_gradient(sim); }
+void SolidModule<D>::sums(Simulation<D>& sim) {
+  compute_deformation_gradient(sim);
+  if (any_ls_) fit_deformation(sim, true);
+}
+
+template <int D>
+void SolidModule<D>::diagnostics(Simulation<D>& sim) { fit_deformation(sim, false); }
+
+template <int D>
+void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
+  auto& p = sim.particles();
+  const auto& nb = sim.neighbours();
+  const auto& pw = sim.pair_w();
+  auto x = p.x();
+  auto ph = p.phase();
+  auto bd = p.body();
+  auto X0 = p.template view<Vec<D>>(kX0_);
+  auto dis = p.template view<double>(kdis_);
+  std::span<Mat<D>> fls;
+  if (kFls_ >= 0) fls = p.template view<Mat<D>>(kFls_);
+  const double dp = sim.dp();
+  const std::size_t n = p.size();
+  if (pw.size() != nb.pairs()) return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    Mat<D> A = Mat<D>::Zero(), B = Mat<D>::Zero();
+    double den = 0;
+    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.nbr(k);
+      if (bd[j] != bd[i] || pw[k] == 0.0) continue;
+      const Vec<D> d = -nb.rij(x[i], x[j], k);
+      const Vec<D> X = initial_difference(X0[j], X0[i]);
+      A.noalias() += pw[k] * d * X.transpose();
+      B.noalias() += pw[k] * X * X.transpose();
+      den += pw[k];
+    }
+    if (den == 0 || std::abs(Mat<D>(B / den).determinant()) < 1e-12 * std::pow(dp, 2 * D)) {
+      dis[i] = 0;
+      if (store_fit && kFls_ >= 0) fls[i] = Mat<D>::Identity();
+      continue;
+    }
+    const Mat<D> F = A * Mat<D>(B.inverse());
+    double res = 0;
+    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.nbr(k);
+      if (bd[j] != bd[i] || pw[k] == 0.0) continue;
+      const Vec<D> d = -nb.rij(x[i], x[j], k);
+      res += pw[k] * (d - F * initial_difference(X0[j], X0[i])).squaredNorm();
+    }
+    dis[i] = std::sqrt(res / den) / dp;
+    if (store_fit && kFls_ >= 0) fls[i] = F;
+  }
+}
 
 template <int D>
 void SolidModule<D>::before_rebuild(Simulation<D>& sim) {
@@ -211,9 +268,10 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   auto mt = p.material();
   auto Ftot = p.template view<Mat<D>>(kF_);
   auto Fref = p.template view<Mat<D>>(kFref_);
+  std::span<Mat<D>> Fls;
+  if (kFls_ >= 0) Fls = p.template view<Mat<D>>(kFls_);
   auto X0 = p.template view<Vec<D>>(kX0_);
   auto Xr = p.template view<Vec<D>>(kXref_);
-  auto dis = p.template view<double>(kdis_);
   const auto& bodies = sim.bodies();
   const auto& mats = sim.materials();
   const double h = sim.kernel().h(), eta2 = 0.01 * h * h;
@@ -229,13 +287,14 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
     const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi * E;
     const double kvisc = -b.hg_zeta * b.hg_chi * m[i] * cs * h;
-    // MMB Eq. 31 literally: total F and the initial configuration; or, with
-    // `reference: intermediate`, F_ref and the configuration of the last neighbour rebuild.
-    const bool inter = b.hg_intermediate;
-    const auto& F = inter ? Fref : Ftot;
+    if (!hg) continue;
+    // MMB Eq. 31 literally: total F and the initial configuration; or F_ref and the
+    // configuration of the last neighbour rebuild (`intermediate`); or the least-squares fit of
+    // the initial onto the current neighbourhood (`least_squares`).
+    const bool inter = b.hg_reference == 1;
+    const auto& F = b.hg_reference == 0 ? Ftot : inter ? Fref : Fls;
     const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
-    double num = 0, den = 0;
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
       if (bd[j] != bd[i] || pw[k] == 0.0) continue;
@@ -245,9 +304,6 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       const double X2 = X.squaredNorm();
       const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
       const double e2 = eps.squaredNorm();
-      num += w * e2;
-      den += w;
-      if (!hg) continue;
       const double r2 = d.squaredNorm();
       const double ed = eps.dot(d);  // (eps . x_ij), |x_ij| times the projection
       // MMB Eq. 32: stiffness-based force along the current pair direction (1 - chi: Eq. 34).
@@ -260,7 +316,6 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       }
     }
     a[i] += f / m[i];
-    dis[i] = den > 0 ? std::sqrt(num / den) / sim.dp() : 0.0;
   }
 }
 

@@ -24,13 +24,19 @@ class SolidModule : public Module<D> {
   void on_rebuild(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
 
+  void diagnostics(Simulation<D>& sim) override;
+
   // Deformation gradient F = F_ref F_init at the current positions (MMB Eq. 28-30).
   void compute_deformation_gradient(Simulation<D>& sim);
+  // Least-squares affine map of the initial onto the current neighbourhood (kernel weights) and
+  // the non-affine residual (D^2_min of Falk & Langer 1998) as the disorder measure, in dp.
+  void fit_deformation(Simulation<D>& sim, bool store_fit);
 
  private:
   Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
 
-  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1;
+  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1;
+  bool any_ls_ = false;
   bool any_as_ = false;
   // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
   // g_ij = V_j L_ref,i grad W(X_ij) in the reference configuration.

@@ -89,6 +89,7 @@ void affine_motion_gives_no_force() {
     R(0, 1) = -std::sin(0.5), R(1, 0) = std::sin(0.5);
     const Mat<D> F = R * A;
     rig.affine(F, c, B, update > 0);
+    rig.sim->diagnostics();
     auto Fd = p.template view<Mat<D>>("deformation_gradient");
     auto dis = p.template view<double>("disorder");
     double fmax = 0, ferr = 0, dmax = 0;
