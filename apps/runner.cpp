@@ -152,6 +152,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     }
     if (!csv) throw InputError("output: cannot write " + csv_path.string());
   }
+  auto last_flush = Clock::now();
   auto sample = [&] {
     if (!opt.write_output) return;
     sim.diagnostics();
@@ -159,6 +160,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     csv << fmt::format("{:.17g},{}", sim.time(), sim.step());
     for (double v : row) csv << fmt::format(",{:.17g}", v);
     csv << "\n";
+    // Flush about once a second so that a user can follow the probes during the run.
+    if (Clock::now() - last_flush > std::chrono::seconds(1)) csv.flush(), last_flush = Clock::now();
   };
   auto checkpoint = [&](const fs::path& file) {
     sim.rebuild_neighbours();  // the restarted run starts from the same list (bit-identical)
