@@ -167,6 +167,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
     cs_.resize(n);
     alpha_.resize(n);
     beta_.resize(n);
+    phimax_.assign(n, 0.0);
   }
   // Sigma_i / (rho_i^2 S_i), the per-particle factor of the normalised stress divergence.
 #pragma omp parallel for schedule(static)
@@ -202,12 +203,27 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
           const double cbar = 0.5 * (cs_[i] + cs_[j]);
           const double phi = h * vr / (r.squaredNorm() + eta2);
           f += ((alpha * cbar - beta * phi) * phi / (0.5 * (rho[i] + rho[j]))) * gw;
+          phimax_[i] = std::max(phimax_[i], -phi);
         }
       }
       acc += m[j] * f;
     }
     a[i] += acc;
   }
+}
+
+template <int D>
+double SphEquations<D>::max_dt(Simulation<D>& sim) {
+  // Viscous criterion of the artificial viscosity (Monaghan 1992):
+  // dt <= CFL h / (c + 0.6 (alpha c + beta max_j |phi_ij|)).
+  if (!any_av_ || phimax_.size() != sim.particles().size()) return std::numeric_limits<double>::infinity();
+  const double h = sim.kernel().h();
+  double dt = std::numeric_limits<double>::infinity();
+  const std::size_t n = phimax_.size();
+#pragma omp parallel for reduction(min : dt) schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    dt = std::min(dt, h / (cs_[i] + 0.6 * (alpha_[i] * cs_[i] + beta_[i] * phimax_[i])));
+  return sim.scene().cfl * dt;
 }
 
 template class SphEquations<2>;
