@@ -104,6 +104,18 @@ class Kernel {
 
   double dw(double r) const { return f(r) * r; }
 
+  // W and F together from the squared distance (one root, no work beyond the support).
+  void wf(double r2, double& wv, double& fv) const {
+    const double rs = radius();
+    if (r2 >= rs * rs) {
+      wv = fv = 0.0;
+      return;
+    }
+    const double r = std::sqrt(r2);
+    wv = w(r);
+    fv = f(r);
+  }
+
  private:
   KernelType type_ = KernelType::CubicSpline;
   double h_ = 1.0, inv_h_ = 1.0, k_ = 0.0, support_ = 2.0;

@@ -242,12 +242,11 @@ void Simulation<D>::update_pair_cache() {
     int jb = -1;
     for (std::size_t k = nb_.begin(i); k < nb_.end(i); ++k) {
       const int j = nb_.nbr(k);
-      const double r = nb_.rij(x[i], x[j], k).norm();
-      pw_[k] = kernel_.w(r);
-      pf_[k] = kernel_.f(r);
-      if (r < best) best = r, jb = j;
+      const double r2 = nb_.rij(x[i], x[j], k).squaredNorm();
+      kernel_.wf(r2, pw_[k], pf_[k]);
+      if (r2 < best) best = r2, jb = j;
     }
-    rmin_[i] = best;
+    rmin_[i] = std::sqrt(best);
     jmin_[i] = jb;
   }
   min_r_ = std::numeric_limits<double>::infinity();

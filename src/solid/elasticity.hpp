@@ -27,7 +27,13 @@ inline Mat3 update_deviatoric(const Mat3& S, const Mat3& L, double mu, double dt
   const Eigen::Matrix3d e = 0.5 * (L + L.transpose());
   const Eigen::Matrix3d w = 0.5 * (L - L.transpose());
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  const Eigen::Matrix3d q = (I - 0.5 * dt * w).inverse() * (I + 0.5 * dt * w);
+  Eigen::Matrix3d q;
+  if (w(0, 2) == 0.0 && w(1, 2) == 0.0) {  // spin about z (all of 2D): closed-form Cayley rotation
+    const double a = 0.5 * dt * w(1, 0), c = (1 - a * a) / (1 + a * a), s = 2 * a / (1 + a * a);
+    q << c, -s, 0, s, c, 0, 0, 0, 1;
+  } else {
+    q = (I - 0.5 * dt * w).inverse() * (I + 0.5 * dt * w);
+  }
   const Eigen::Matrix3d s = Eigen::Matrix3d(S) + dt * 2.0 * mu * (e - e.trace() / 3.0 * I);
   return Mat3(q * s * q.transpose());
 }
