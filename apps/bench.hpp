@@ -11,10 +11,13 @@ struct BenchOptions {
   long size3d = 50000;
   std::vector<int> threads{1, 2};
   std::string cases_dir = MONOSPH_CASES_DIR;
+  std::string scene;               // bench this scene instead of the acoustic wave...
+  std::vector<double> refine{1};   // ...at dp / each of these
 };
 
-// `monosph bench`: particle-steps per second of the acoustic-wave scene (2D sizes, one 3D size)
-// on each thread count, and neighbour-build time per particle. Prints a table; optional JSON.
+// `monosph bench`: particle-steps per second of the acoustic-wave scene (2D sizes, one 3D size),
+// or of any scene at refined spacings, on each thread count, and neighbour-build time per
+// particle. Prints a table; optional JSON.
 int run_bench(const BenchOptions& opt);
 
 }  // namespace monosph

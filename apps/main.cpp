@@ -28,13 +28,15 @@ int main(int argc, char** argv) {
   cmd_info->add_option("--set", info_set, "override a scene key")->take_all();
 
   BenchOptions bench;
-  auto* cmd_bench = app.add_subcommand("bench", "particle-steps per second of the acoustic-wave scene");
+  auto* cmd_bench = app.add_subcommand("bench", "particle-steps per second (acoustic wave, or --scene)");
   cmd_bench->add_option("--json", bench.json, "write the results as JSON to this file");
   cmd_bench->add_option("--steps", bench.steps, "steps per measurement")->check(CLI::PositiveNumber);
   cmd_bench->add_option("--sizes", bench.sizes, "2D particle counts (approximate)");
   cmd_bench->add_option("--size-3d", bench.size3d, "3D particle count (approximate, 0: skip)");
   cmd_bench->add_option("--threads", bench.threads, "thread counts to measure");
   cmd_bench->add_option("--cases", bench.cases_dir, "folder that holds the cases");
+  cmd_bench->add_option("--scene", bench.scene, "bench this scene instead of the acoustic wave");
+  cmd_bench->add_option("--refine", bench.refine, "with --scene: run at dp divided by each factor");
 
   try {
     app.parse(argc, argv);

@@ -187,15 +187,19 @@ void Simulation<D>::apply_bc_velocity(double t) {
   auto bc = p_.template view<std::int64_t>(kbc_);
   auto v = p_.v();
   auto x = p_.x();
-  for (std::size_t i = 0; i < p_.size(); ++i) {
-    if (!bc[i]) continue;
+  const std::size_t n = p_.size();
+  // Fixed sets in parallel; expressions (muparser is not thread-safe) on one thread.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (bc[i] && bc_velocity_[bc[i] - 1].empty()) v[i].setZero();
+  bool any_expr = false;
+  for (const auto& e : bc_velocity_) any_expr = any_expr || !e.empty();
+  if (!any_expr) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!bc[i] || bc_velocity_[bc[i] - 1].empty()) continue;
     const auto& ex = bc_velocity_[bc[i] - 1];
-    if (ex.empty()) {
-      v[i].setZero();
-    } else {
-      const double zz = D == 3 ? x[i][D - 1] : 0.0;
-      for (int a = 0; a < D; ++a) v[i][a] = ex[a](x[i][0], x[i][1], zz, t);
-    }
+    const double zz = D == 3 ? x[i][D - 1] : 0.0;
+    for (int a = 0; a < D; ++a) v[i][a] = ex[a](x[i][0], x[i][1], zz, t);
   }
 }
 
@@ -352,12 +356,11 @@ void Simulation<D>::check_guards() {
   }
   if (bad >= 0) why = 1;
   if (!why) {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (v[i].norm() > scene_.max_mach * scene_.materials[mt[i]].wave_speed()) {
-        bad = static_cast<long>(i), why = 2;
-        break;
-      }
-    }
+    long fast = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) reduction(min : fast)
+    for (std::size_t i = 0; i < n; ++i)
+      if (v[i].norm() > scene_.max_mach * scene_.materials[mt[i]].wave_speed()) fast = std::min(fast, long(i));
+    if (fast != std::numeric_limits<long>::max()) bad = fast, why = 2;
   }
   std::ostringstream os;
   os.precision(6);
