@@ -10,7 +10,9 @@ namespace monosph {
 template <int D>
 void assemble_modules(Simulation<D>& sim) {
   const auto& mods = sim.scene().modules;
-  auto enabled = [&](const char* m) { return std::find(mods.begin(), mods.end(), m) != mods.end(); };
+  auto enabled = [&](const char* m) {
+    return std::find(mods.begin(), mods.end(), m) != mods.end();
+  };
   // The shared Eulerian SPH equations are always on (first: the others read their sums).
   sim.add_module(std::make_unique<SphEquations<D>>(sim, enabled("solid")));
   if (enabled("solid")) sim.add_module(std::make_unique<SolidModule<D>>(sim));

@@ -14,8 +14,8 @@ namespace monosph {
 
 int run_bench(const BenchOptions& opt) {
   nlohmann::json rows = nlohmann::json::array();
-  fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12} {:>14} {:>12}\n", "dim", "particles", "threads", "steps",
-             "wall [s]", "part-steps/s", "nbuild [us/p]");
+  fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12} {:>14} {:>12}\n", "dim", "particles", "threads",
+             "steps", "wall [s]", "part-steps/s", "nbuild [us/p]");
   struct Case {
     int dim;
     long n;  // particles wanted (acoustic wave), or 0 with a refinement factor
@@ -26,8 +26,10 @@ int run_bench(const BenchOptions& opt) {
   if (!opt.scene.empty()) {
     for (double f : opt.refine) cases.push_back({0, 0, f, opt.scene});
   } else {
-    for (long n : opt.sizes) cases.push_back({2, n, 1, opt.cases_dir + "/acoustic_wave/scene.yaml"});
-    if (opt.size3d > 0) cases.push_back({3, opt.size3d, 1, opt.cases_dir + "/acoustic_wave/scene_3d.yaml"});
+    for (long n : opt.sizes)
+      cases.push_back({2, n, 1, opt.cases_dir + "/acoustic_wave/scene.yaml"});
+    if (opt.size3d > 0)
+      cases.push_back({3, opt.size3d, 1, opt.cases_dir + "/acoustic_wave/scene_3d.yaml"});
   }
   for (auto& c : cases) {
     Scene base = load_scene_file(c.file);
@@ -44,9 +46,10 @@ int run_bench(const BenchOptions& opt) {
       ro.max_steps = opt.steps;
       ro.write_output = false;
       RunResult r = run_scene(ro);
-      const double nb_us = r.neighbour_builds ? 1e6 * r.neighbour_seconds / r.neighbour_builds / r.particles : 0;
-      fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12.3f} {:>14.4g} {:>12.3f}\n", c.dim, r.particles, th, r.steps,
-                 r.wall_seconds, r.particle_steps_per_second, nb_us);
+      const double nb_us =
+          r.neighbour_builds ? 1e6 * r.neighbour_seconds / r.neighbour_builds / r.particles : 0;
+      fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12.3f} {:>14.4g} {:>12.3f}\n", c.dim, r.particles, th,
+                 r.steps, r.wall_seconds, r.particle_steps_per_second, nb_us);
       std::fflush(stdout);
       rows.push_back({{"dimension", c.dim},
                       {"particles", r.particles},
@@ -60,7 +63,9 @@ int run_bench(const BenchOptions& opt) {
   if (!opt.json.empty()) {
     std::ofstream out(opt.json);
     if (!out) throw InputError("bench: cannot write " + opt.json);
-    out << nlohmann::json{{"scene", opt.scene.empty() ? "acoustic_wave" : opt.scene}, {"results", rows}}.dump(2)
+    out << nlohmann::json{{"scene", opt.scene.empty() ? "acoustic_wave" : opt.scene},
+                          {"results", rows}}
+               .dump(2)
         << "\n";
     fmt::print("written {}\n", opt.json);
   }

@@ -11,8 +11,8 @@ struct BenchOptions {
   long size3d = 50000;
   std::vector<int> threads{1, 2};
   std::string cases_dir = MONOSPH_CASES_DIR;
-  std::string scene;               // bench this scene instead of the acoustic wave...
-  std::vector<double> refine{1};   // ...at dp / each of these
+  std::string scene;              // bench this scene instead of the acoustic wave...
+  std::vector<double> refine{1};  // ...at dp / each of these
 };
 
 // `monosph bench`: particle-steps per second of the acoustic-wave scene (2D sizes, one 3D size),

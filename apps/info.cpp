@@ -38,8 +38,10 @@ int info_impl(const Scene& scene) {
   const double nbytes = pairs * 5 * p.size();
   fmt::print("fields     {} per particle: ", per);
   for (const auto& f : p.fields()) fmt::print("{} ", f.name);
-  fmt::print("\nmemory     about {:.1f} MB (fields {:.1f} MB, neighbour lists {:.1f} MB, ~{:.0f} pairs per particle)\n",
-             (bytes + nbytes) / 1e6, bytes / 1e6, nbytes / 1e6, pairs);
+  fmt::print(
+      "\nmemory     about {:.1f} MB (fields {:.1f} MB, neighbour lists {:.1f} MB, ~{:.0f} pairs "
+      "per particle)\n",
+      (bytes + nbytes) / 1e6, bytes / 1e6, nbytes / 1e6, pairs);
   return 0;
 }
 }  // namespace

@@ -1,11 +1,12 @@
 // monosph command line: run, info, bench.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
+
 #include "bench.hpp"
+#include "core/types.hpp"
 #include "info.hpp"
 #include "runner.hpp"
-#include "core/types.hpp"
 
 int main(int argc, char** argv) {
   using namespace monosph;
@@ -15,9 +16,11 @@ int main(int argc, char** argv) {
   RunOptions run;
   auto* cmd_run = app.add_subcommand("run", "run a scene to its end time");
   cmd_run->add_option("scene", run.scene, "scene file (YAML)");
-  cmd_run->add_option("--set", run.overrides, "override a scene key, e.g. --set end_time=0.1")->take_all();
+  cmd_run->add_option("--set", run.overrides, "override a scene key, e.g. --set end_time=0.1")
+      ->take_all();
   cmd_run->add_option("--out", run.out, "output folder (default out/<scene name>)");
-  cmd_run->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  cmd_run->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
   cmd_run->add_option("--restart", run.restart, "continue from a checkpoint file (.h5)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress line");
 
@@ -28,9 +31,11 @@ int main(int argc, char** argv) {
   cmd_info->add_option("--set", info_set, "override a scene key")->take_all();
 
   BenchOptions bench;
-  auto* cmd_bench = app.add_subcommand("bench", "particle-steps per second (acoustic wave, or --scene)");
+  auto* cmd_bench =
+      app.add_subcommand("bench", "particle-steps per second (acoustic wave, or --scene)");
   cmd_bench->add_option("--json", bench.json, "write the results as JSON to this file");
-  cmd_bench->add_option("--steps", bench.steps, "steps per measurement")->check(CLI::PositiveNumber);
+  cmd_bench->add_option("--steps", bench.steps, "steps per measurement")
+      ->check(CLI::PositiveNumber);
   cmd_bench->add_option("--sizes", bench.sizes, "2D particle counts (approximate)");
   cmd_bench->add_option("--size-3d", bench.size3d, "3D particle count (approximate, 0: skip)");
   cmd_bench->add_option("--threads", bench.threads, "thread counts to measure");
@@ -45,7 +50,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (*cmd_run) {
-      if (run.scene.empty() && run.restart.empty()) throw InputError("run: give a scene file or --restart FILE");
+      if (run.scene.empty() && run.restart.empty())
+        throw InputError("run: give a scene file or --restart FILE");
       return run_scene(run).exit_code;
     }
     if (*cmd_info) return print_info(info_scene, info_set);

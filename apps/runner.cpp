@@ -45,9 +45,10 @@ class Progress {
     const double wall = std::chrono::duration<double>(now - start_).count();
     const double frac = (t - t0_) / (t_end_ - t0_);
     const double eta = frac > 0 ? wall * (1 - frac) / frac : NAN;
-    std::string line = fmt::format("t = {:.4e} / {:.4e} s ({:5.1f}%)  step {}  {:.0f} steps/s  ETA {}",
-                                   t, t_end_, 100 * std::min(1.0, t / t_end_), steps,
-                                   wall > 0 ? (steps - steps0_) / wall : 0.0, hms(eta));
+    std::string line =
+        fmt::format("t = {:.4e} / {:.4e} s ({:5.1f}%)  step {}  {:.0f} steps/s  ETA {}", t, t_end_,
+                    100 * std::min(1.0, t / t_end_), steps,
+                    wall > 0 ? (steps - steps0_) / wall : 0.0, hms(eta));
     if (tty_)
       fmt::print(stderr, "\r{:<100}", line);
     else
@@ -66,7 +67,8 @@ class Progress {
 };
 
 // Reads the probe CSV back (columns: time, step, probes...) for the reference metrics.
-void read_csv(const fs::path& file, std::vector<std::string>& head, std::vector<std::vector<double>>& cols) {
+void read_csv(const fs::path& file, std::vector<std::string>& head,
+              std::vector<std::vector<double>>& cols) {
   std::ifstream in(file);
   std::string line;
   if (!std::getline(in, line)) return;
@@ -77,7 +79,8 @@ void read_csv(const fs::path& file, std::vector<std::string>& head, std::vector<
   while (std::getline(in, line)) {
     std::stringstream ls(line);
     std::size_t k = 0;
-    for (std::string c; std::getline(ls, c, ',') && k < cols.size(); ++k) cols[k].push_back(std::stod(c));
+    for (std::string c; std::getline(ls, c, ',') && k < cols.size(); ++k)
+      cols[k].push_back(std::stod(c));
   }
 }
 
@@ -109,7 +112,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     if (!p.has(f)) {
       std::string names;
       for (const auto& ff : p.fields()) names += (names.empty() ? "" : ", ") + ff.name;
-      throw InputError("output.fields: no particle field '" + f + "' in this scene (available: " + names + ")");
+      throw InputError("output.fields: no particle field '" + f +
+                       "' in this scene (available: " + names + ")");
     }
   }
   Probes<D> probes(sim);
@@ -141,7 +145,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       if (!cols.empty() && head.size() == probes.columns().size() + 2)
         for (std::size_t r = 0; r < cols[0].size(); ++r) {
           if (cols[0][r] > sim.time() + 1e-300) break;
-          for (std::size_t k = 0; k < cols.size(); ++k) csv << (k ? "," : "") << fmt::format("{:.17g}", cols[k][r]);
+          for (std::size_t k = 0; k < cols.size(); ++k)
+            csv << (k ? "," : "") << fmt::format("{:.17g}", cols[k][r]);
           csv << "\n";
         }
     } else {
@@ -179,7 +184,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
 
   const double eps = 1e-12 * scene.end_time;
   if (!restart_meta) {
-    if (opt.write_output) sim.diagnostics(), vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+    if (opt.write_output)
+      sim.diagnostics(), vtk->write(p, sim.time(), sim.step(), scene.output_fields);
     next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
     next_probe = scene.probe_every;
@@ -266,10 +272,12 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     for (const auto& ref : scene.references) {
       const auto& spec = *std::find_if(scene.probes.begin(), scene.probes.end(),
                                        [&](const ProbeSpec& s) { return s.name == ref.probe; });
-      std::string col = spec.type == "momentum" || spec.type == "reaction_force" ? ref.probe + "_x" : ref.probe;
+      std::string col =
+          spec.type == "momentum" || spec.type == "reaction_force" ? ref.probe + "_x" : ref.probe;
       auto it = std::find(head.begin(), head.end(), col);
       double value = NAN;
-      if (it != head.end() && !cols.empty()) value = measure_series(ref.measure, cols[0], cols[it - head.begin()], ref.start);
+      if (it != head.end() && !cols.empty())
+        value = measure_series(ref.measure, cols[0], cols[it - head.begin()], ref.start);
       nlohmann::json m;
       m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
       m["reference"] = ref.value;
@@ -281,21 +289,24 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   }
   std::ofstream(out / "summary.json") << js.dump(2) << "\n";
   if (!opt.quiet) {
-    fmt::print(stderr, "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {} threads\n",
+    fmt::print(stderr,
+               "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {} "
+               "threads\n",
                status == "completed" ? "completed" : "stopped", res.particles, res.steps, wall,
                res.particle_steps_per_second, omp_get_max_threads());
     for (const auto& ref : scene.references) {
       const nlohmann::json& m = js["metrics"][ref.name];
       if (m["value"].is_null()) {
-        fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name, ref.probe);
+        fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name,
+                   ref.probe);
         continue;
       }
       const double v = m["value"], rv = m["reference"];
-      fmt::print(stderr, "monosph: {} = {:.6g} (reference {:.6g}, relative error {:.3e})\n", ref.name, v, rv,
-                 std::abs(v - rv) / std::abs(rv));
+      fmt::print(stderr, "monosph: {} = {:.6g} (reference {:.6g}, relative error {:.3e})\n",
+                 ref.name, v, rv, std::abs(v - rv) / std::abs(rv));
     }
-    fmt::print(stderr, "monosph: ParaView file {}\nmonosph: summary {}\n", (out / (scene.name + ".pvd")).string(),
-               (out / "summary.json").string());
+    fmt::print(stderr, "monosph: ParaView file {}\nmonosph: summary {}\n",
+               (out / (scene.name + ".pvd")).string(), (out / "summary.json").string());
   }
   return res;
 }

@@ -48,6 +48,8 @@ double Expression::operator()(double x, double y, double z, double t) const {
   return impl_->parser.Eval();
 }
 
-bool Expression::depends_on_time() const { return impl_ && impl_->uses_t; }
+bool Expression::depends_on_time() const {
+  return impl_ && impl_->uses_t;
+}
 
 }  // namespace monosph

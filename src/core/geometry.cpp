@@ -100,14 +100,18 @@ KernelType kernel_from_name(const std::string& name) {
   if (name == "cubic_spline") return KernelType::CubicSpline;
   if (name == "wendland_c2") return KernelType::WendlandC2;
   if (name == "quintic_spline") return KernelType::QuinticSpline;
-  throw InputError("kernel: '" + name + "' is not allowed (allowed: cubic_spline, wendland_c2, quintic_spline)");
+  throw InputError("kernel: '" + name +
+                   "' is not allowed (allowed: cubic_spline, wendland_c2, quintic_spline)");
 }
 
 const char* kernel_name(KernelType t) {
   switch (t) {
-    case KernelType::CubicSpline: return "cubic_spline";
-    case KernelType::WendlandC2: return "wendland_c2";
-    case KernelType::QuinticSpline: return "quintic_spline";
+    case KernelType::CubicSpline:
+      return "cubic_spline";
+    case KernelType::WendlandC2:
+      return "wendland_c2";
+    case KernelType::QuinticSpline:
+      return "quintic_spline";
   }
   return "?";
 }

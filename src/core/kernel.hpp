@@ -1,5 +1,6 @@
 #pragma once
-// SPH kernels: value W(r) and gradient factor F(r) = W'(r)/r, so that grad_i W_ij = F(r) (x_i - x_j).
+// SPH kernels: value W(r) and gradient factor F(r) = W'(r)/r, so that grad_i W_ij = F(r) (x_i -
+// x_j).
 #include <cmath>
 #include <numbers>
 #include <string>

@@ -20,9 +20,9 @@ void Neighbours<D>::configure(const Domain<D>& dom, double cutoff, double skin) 
     const double len = dom.hi[a] - dom.lo[a];
     nc_[a] = std::max(1, static_cast<int>(std::floor(len / cell_)));
     if (dom.periodic[a] && nc_[a] < 3)
-      throw InputError(std::string("domain: periodic axis ") + axis[a] + " is " +
-                       std::to_string(len) + " long; it must be at least 3 x (kernel support + skin) = " +
-                       std::to_string(3 * cell_));
+      throw InputError(
+          std::string("domain: periodic axis ") + axis[a] + " is " + std::to_string(len) +
+          " long; it must be at least 3 x (kernel support + skin) = " + std::to_string(3 * cell_));
   }
   for (int c = 0; c < kShifts; ++c) {
     int r = c;
@@ -125,11 +125,17 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder) {
         int c = ci[a] + offs[o][a];
         int s = 0;
         if (c < 0) {
-          if (!dom_.periodic[a]) { skip = true; break; }
+          if (!dom_.periodic[a]) {
+            skip = true;
+            break;
+          }
           c += nc_[a];
           s = -1;
         } else if (c >= nc_[a]) {
-          if (!dom_.periodic[a]) { skip = true; break; }
+          if (!dom_.periodic[a]) {
+            skip = true;
+            break;
+          }
           c -= nc_[a];
           s = 1;
         }

@@ -87,7 +87,8 @@ template <class T>
 void permute_vec(std::vector<T>& data, int nc, const std::vector<int>& order) {
   std::vector<T> out(order.size() * nc);
   for (std::size_t i = 0; i < order.size(); ++i)
-    for (int c = 0; c < nc; ++c) out[i * nc + c] = data[static_cast<std::size_t>(order[i]) * nc + c];
+    for (int c = 0; c < nc; ++c)
+      out[i * nc + c] = data[static_cast<std::size_t>(order[i]) * nc + c];
   data.swap(out);
 }
 }  // namespace

@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <numbers>
+#include <numeric>
 
 #include "expression.hpp"
 
@@ -31,8 +31,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
       if (it->field < 0) {
         std::string names;
         for (const auto& f : p.fields()) names += (names.empty() ? "" : ", ") + f.name;
-        throw InputError(where + ".field: no particle field '" + s.field + "' in this scene (available: " +
-                         names + ")");
+        throw InputError(where + ".field: no particle field '" + s.field +
+                         "' in this scene (available: " + names + ")");
       }
       const int nc = p.field(it->field).ncomp;
       if (nc > 1 && (s.component < 0 || s.component >= nc))
@@ -47,7 +47,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
         if (sim.bodies()[b].name == s.body) it->body = static_cast<int>(b);
     }
     if (s.type == "disorder" && !p.has("disorder"))
-      throw InputError(where + ".type: 'disorder' needs a solid body (the solid module computes it)");
+      throw InputError(where +
+                       ".type: 'disorder' needs a solid body (the solid module computes it)");
     if (!s.weight_expr.empty()) it->weight = Expression(s.weight_expr, where + ".weight");
     if (s.type == "tracked") {  // the particle nearest to the point now, followed by its id
       double best = std::numeric_limits<double>::infinity();

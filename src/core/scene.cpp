@@ -1,17 +1,19 @@
 #include "scene.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "expression.hpp"
 #include "scene_reader.hpp"
 
 namespace monosph {
 
-double Material::sound_speed() const { return std::sqrt(bulk_modulus / density); }
+double Material::sound_speed() const {
+  return std::sqrt(bulk_modulus / density);
+}
 double Material::wave_speed() const {
   return std::sqrt((bulk_modulus + 4.0 * shear_modulus / 3.0) / density);
 }
@@ -26,7 +28,9 @@ namespace {
 
 const std::vector<std::string> kModules = {"solid"};  // physics modules available to scenes
 
-void check_expression(const std::string& text, const std::string& path) { Expression e(text, path); }
+void check_expression(const std::string& text, const std::string& path) {
+  Expression e(text, path);
+}
 
 std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim) {
   auto n = r.node(key);
@@ -64,7 +68,9 @@ std::vector<std::string> velocity_profile(MapReader& in, int dim) {
   const std::string sx = fmt::format("({}-({:.17g}))", along, x0);
   const std::string ks = fmt::format("{:.17g}", k);
   std::string e = fmt::format(
-      "{0}>0 ? {1:.17g}*(({2:.17g})*(cosh({3}*{0})-cos({3}*{0}))+({4:.17g})*(sinh({3}*{0})-sin({3}*{0}))) : 0",
+      "{0}>0 ? "
+      "{1:.17g}*(({2:.17g})*(cosh({3}*{0})-cos({3}*{0}))+({4:.17g})*(sinh({3}*{0})-sin({3}*{0}))) "
+      ": 0",
       sx, vl / f(len), std::cos(kl) + std::cosh(kl), ks, std::sin(kl) - std::sinh(kl));
   std::vector<std::string> out(dim, "0");
   out[a] = e;
@@ -72,12 +78,13 @@ std::vector<std::string> velocity_profile(MapReader& in, int dim) {
 }
 
 Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
-  static const std::vector<std::string> kinds = {"box",      "circle",  "sphere", "ring",
-                                                 "hollow_sphere", "cylinder", "polygon",
-                                                 "union",    "difference"};
+  static const std::vector<std::string> kinds = {"box",     "circle",        "sphere",
+                                                 "ring",    "hollow_sphere", "cylinder",
+                                                 "polygon", "union",         "difference"};
   if (!node.IsMap() || node.size() != 1)
-    scene_error(path, "expected a map with exactly one shape key (box, circle, sphere, ring, "
-                      "hollow_sphere, cylinder, polygon, union, difference)");
+    scene_error(path,
+                "expected a map with exactly one shape key (box, circle, sphere, ring, "
+                "hollow_sphere, cylinder, polygon, union, difference)");
   std::string kind = node.begin()->first.as<std::string>();
   YAML::Node body = node.begin()->second;
   std::string p = path + "." + kind;
@@ -242,8 +249,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       s.kernel = kernel_from_name(as_text(kn, "kernel"));
     } else {
       MapReader k(kn, "kernel");
-      s.kernel = kernel_from_name(k.choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"},
-                                           "cubic_spline"));
+      s.kernel = kernel_from_name(
+          k.choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"}, "cubic_spline"));
       s.h_factor = k.positive("h_factor", 1.3);
       k.finish();
     }
@@ -295,7 +302,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   if (r.has("modules")) {
     for (const auto& m : r.strings("modules")) {
       if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
-        scene_error("modules", "unknown module '" + m + "' (available: solid; the basic Eulerian SPH "
+        scene_error("modules", "unknown module '" + m +
+                                   "' (available: solid; the basic Eulerian SPH "
                                    "equations are always on)");
       s.modules.push_back(m);
     }
@@ -305,7 +313,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
 
   {
     auto bodies = r.node("bodies");
-    if (!bodies.IsSequence() || bodies.size() == 0) scene_error("bodies", "expected a list of bodies");
+    if (!bodies.IsSequence() || bodies.size() == 0)
+      scene_error("bodies", "expected a list of bodies");
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       std::string p = "bodies[" + std::to_string(i) + "]";
       MapReader b(bodies[i], p);
@@ -335,10 +344,14 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         if (!body.density_expr.empty()) check_expression(body.density_expr, in.at("density"));
         if (in.has("velocity") && in.has("velocity_profile"))
           scene_error(in.path(), "give either velocity or velocity_profile, not both");
-        if (in.has("velocity")) body.velocity_expr = expressions(in, "velocity", dim);
-        else in.optional("velocity");
-        if (in.has("velocity_profile")) body.velocity_expr = velocity_profile(in, dim);
-        else in.optional("velocity_profile");
+        if (in.has("velocity"))
+          body.velocity_expr = expressions(in, "velocity", dim);
+        else
+          in.optional("velocity");
+        if (in.has("velocity_profile"))
+          body.velocity_expr = velocity_profile(in, dim);
+        else
+          in.optional("velocity_profile");
         in.finish();
       } else {
         b.optional("initial");
@@ -367,13 +380,15 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         b.optional("density_diffusion");
       }
       if (b.has("hourglass")) {
-        if (body.phase != "solid") scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
+        if (body.phase != "solid")
+          scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
         MapReader hg(b.node("hourglass"), p + ".hourglass");
         body.hg_xi = hg.non_negative("xi", 0.0);
         body.hg_zeta = hg.non_negative("zeta", 0.0);
         body.hg_chi = hg.non_negative("chi", 0.0);
         if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
-        const std::string ref = hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
+        const std::string ref =
+            hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
         body.hg_reference = ref == "initial" ? 0 : ref == "intermediate" ? 1 : 2;
         hg.finish();
       } else {
@@ -386,14 +401,16 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       for (int a = 0; a < dim; ++a)
         if (lo[a] < s.domain_min[a] - 1e-12 || hi[a] > s.domain_max[a] + 1e-12)
           scene_error(p + ".shape", "extends outside the domain along " + std::string(1, "xyz"[a]) +
-                                        " ([" + std::to_string(lo[a]) + ", " + std::to_string(hi[a]) +
-                                        "] is not within [" + std::to_string(s.domain_min[a]) +
-                                        ", " + std::to_string(s.domain_max[a]) + "])");
+                                        " ([" + std::to_string(lo[a]) + ", " +
+                                        std::to_string(hi[a]) + "] is not within [" +
+                                        std::to_string(s.domain_min[a]) + ", " +
+                                        std::to_string(s.domain_max[a]) + "])");
       s.bodies.push_back(std::move(body));
     }
     // A solid body needs the solid module: switch it on.
     for (const auto& body : s.bodies)
-      if (body.phase == "solid" && std::find(s.modules.begin(), s.modules.end(), "solid") == s.modules.end())
+      if (body.phase == "solid" &&
+          std::find(s.modules.begin(), s.modules.end(), "solid") == s.modules.end())
         s.modules.push_back("solid");
   }
 
@@ -426,7 +443,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     r.optional("boundary_conditions");
   }
 
-  s.body_force = r.has("body_force") ? r.vector("body_force", dim) : (r.optional("body_force"), Point(dim, 0.0));
+  s.body_force = r.has("body_force") ? r.vector("body_force", dim)
+                                     : (r.optional("body_force"), Point(dim, 0.0));
   s.end_time = r.positive("end_time");
 
   if (r.has("time_step")) {
@@ -454,8 +472,10 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     MapReader o(r.node("output"), "output");
     s.output_every = o.non_negative("every", 0.0);
     s.checkpoint_every = o.non_negative("checkpoint_every", 0.0);
-    if (o.has("fields")) s.output_fields = o.strings("fields");
-    else o.optional("fields");
+    if (o.has("fields"))
+      s.output_fields = o.strings("fields");
+    else
+      o.optional("fields");
     o.finish();
   } else {
     r.optional("output");
@@ -467,15 +487,17 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     auto list = pr.node("list");
     if (!list.IsSequence()) scene_error("probes.list", "expected a list of probes");
     static const std::vector<std::string> types = {
-        "kinetic_energy", "elastic_energy", "disorder", "total_mass", "momentum", "abs_momentum", "max_speed", "min_distance",
-        "integral",       "mean",       "value_at", "tracked", "reaction_force"};
+        "kinetic_energy", "elastic_energy", "disorder",      "total_mass", "momentum",
+        "abs_momentum",   "max_speed",      "min_distance",  "integral",   "mean",
+        "value_at",       "tracked",        "reaction_force"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
       ProbeSpec ps;
       ps.name = q.text("name");
       ps.type = q.choice("type", types);
-      if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at" || ps.type == "tracked") {
+      if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at" ||
+          ps.type == "tracked") {
         ps.field = q.text("field");
         auto dot = ps.field.find('.');
         if (dot != std::string::npos) {
@@ -491,12 +513,15 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       ps.weight_expr = q.text("weight", "");
       if (!ps.weight_expr.empty()) check_expression(ps.weight_expr, q.at("weight"));
       ps.body = q.text("body", "");
-      if (ps.type == "value_at" || ps.type == "tracked") ps.point = q.vector("point", dim);
-      else q.optional("point");
+      if (ps.type == "value_at" || ps.type == "tracked")
+        ps.point = q.vector("point", dim);
+      else
+        q.optional("point");
       if (ps.type == "reaction_force") {
         bool found = false;
         for (const auto& bc : s.boundaries) found = found || bc.name == ps.body;
-        if (!found) scene_error(p + ".body", "reaction_force needs the name of a boundary condition");
+        if (!found)
+          scene_error(p + ".body", "reaction_force needs the name of a boundary condition");
       } else if (!ps.body.empty()) {
         bool found = false;
         for (const auto& body : s.bodies) found = found || body.name == ps.body;
@@ -520,8 +545,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       rs.name = q.text("name");
       rs.value = q.number("value");
       rs.probe = q.text("probe");
-      rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max", "min", "mean",
-                                          "peak_ratio"});
+      rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max",
+                                        "min", "mean", "peak_ratio"});
       rs.start = q.non_negative("start", 0.0);
       bool found = false;
       for (const auto& ps : s.probes) found = found || ps.name == rs.probe;

@@ -18,47 +18,47 @@ using Point = std::vector<double>;
 // A geometric primitive or combination; `contains` is tested on lattice nodes.
 struct Shape {
   enum class Kind { Box, Sphere, Ring, Cylinder, Polygon, Union, Difference } kind;
-  Point a, b;             // box min/max; cylinder start/end
-  Point center;           // sphere, ring
-  double r0 = 0, r1 = 0;  // radius; ring inner/outer
-  std::vector<Point> vertices;         // polygon
-  std::vector<Shape> parts;            // union: any; difference: first minus the rest
+  Point a, b;                   // box min/max; cylinder start/end
+  Point center;                 // sphere, ring
+  double r0 = 0, r1 = 0;        // radius; ring inner/outer
+  std::vector<Point> vertices;  // polygon
+  std::vector<Shape> parts;     // union: any; difference: first minus the rest
   bool contains(const Point& x) const;
   void bounds(Point& lo, Point& hi) const;  // axis-aligned bounding box
 };
 
 struct Material {
   std::string name;
-  double density = 0;        // rho0
-  double bulk_modulus = 0;   // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
-  double shear_modulus = 0;  // mu
-  double sound_speed() const;       // sqrt(K/rho0), used by artificial viscosity
-  double wave_speed() const;        // sqrt((K + 4 mu/3)/rho0), used by the time step
+  double density = 0;          // rho0
+  double bulk_modulus = 0;     // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
+  double shear_modulus = 0;    // mu
+  double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
+  double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
 };
 
 struct BodySpec {
   std::string name;
-  std::string phase;  // fluid | solid
+  std::string phase;      // fluid | solid
   std::string continuum;  // solid bodies with the same continuum name interact as one body
   int material = 0;
   Shape shape;
   double jitter = 0;  // random displacement of lattice nodes, fraction of dp
   unsigned seed = 1;
-  std::string density_expr;               // initial density (default rho0)
-  std::vector<std::string> velocity_expr;  // initial velocity components
-  double av_alpha = 0, av_beta = 0;        // artificial viscosity (MMB Eq. 17-18)
-  double as_epsilon = 0, as_n = 4;         // artificial stress (MMB Eq. 19-20)
-  double delta = 0;                        // density diffusion (MMB Eq. 21)
+  std::string density_expr;                   // initial density (default rho0)
+  std::vector<std::string> velocity_expr;     // initial velocity components
+  double av_alpha = 0, av_beta = 0;           // artificial viscosity (MMB Eq. 17-18)
+  double as_epsilon = 0, as_n = 4;            // artificial stress (MMB Eq. 19-20)
+  double delta = 0;                           // density diffusion (MMB Eq. 21)
   double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
   int hg_reference = 0;  // error vector against: 0 initial (MMB), 1 intermediate, 2 least squares
 };
 
 struct BoundarySpec {
-  std::string type;  // fixed | velocity
-  std::string body;  // whole body, or
-  std::optional<Shape> region;  // particles inside a region
+  std::string type;                        // fixed | velocity
+  std::string body;                        // whole body, or
+  std::optional<Shape> region;             // particles inside a region
   std::vector<std::string> velocity_expr;  // in x, y, z, t
-  std::string name;  // probe name for the reaction force
+  std::string name;                        // probe name for the reaction force
 };
 
 struct ProbeSpec {

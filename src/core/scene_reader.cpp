@@ -69,15 +69,16 @@ std::string as_text(const YAML::Node& n, const std::string& path) {
 
 std::vector<double> as_vector(const YAML::Node& n, const std::string& path, int size) {
   if (!n.IsSequence() || static_cast<int>(n.size()) != size)
-    scene_error(path, "expected a list of " + std::to_string(size) + " numbers, got " + describe(n) +
-                          (n.IsSequence() ? " of " + std::to_string(n.size()) : ""));
+    scene_error(path, "expected a list of " + std::to_string(size) + " numbers, got " +
+                          describe(n) + (n.IsSequence() ? " of " + std::to_string(n.size()) : ""));
   std::vector<double> v;
   for (std::size_t i = 0; i < n.size(); ++i)
     v.push_back(as_number(n[i], path + "[" + std::to_string(i) + "]"));
   return v;
 }
 
-MapReader::MapReader(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
+MapReader::MapReader(const YAML::Node& node, std::string path)
+    : node_(node), path_(std::move(path)) {
   if (!node.IsMap()) scene_error(path_, "expected a map of keys, got " + describe(node));
 }
 
@@ -90,7 +91,8 @@ YAML::Node MapReader::node(const std::string& key) {
   if (!has(key)) {
     // A misspelt key is the likely cause: name it.
     std::vector<std::string> present;
-    for (auto it = node_.begin(); it != node_.end(); ++it) present.push_back(it->first.as<std::string>());
+    for (auto it = node_.begin(); it != node_.end(); ++it)
+      present.push_back(it->first.as<std::string>());
     std::string hint = closest_word(key, present);
     if (!hint.empty() && hint != key)
       scene_error(at(hint), "unknown key; did you mean '" + key + "'? (" + key + " is required)");
@@ -105,7 +107,9 @@ YAML::Node MapReader::optional(const std::string& key) {
   return node_[key];
 }
 
-double MapReader::number(const std::string& key) { return as_number(node(key), at(key)); }
+double MapReader::number(const std::string& key) {
+  return as_number(node(key), at(key));
+}
 double MapReader::number(const std::string& key, double fallback) {
   return has(key) ? number(key) : (used_.insert(key), fallback);
 }
@@ -126,7 +130,8 @@ double MapReader::non_negative(const std::string& key, double fallback) {
 int MapReader::integer(const std::string& key, int fallback) {
   if (!has(key)) return used_.insert(key), fallback;
   double v = number(key);
-  if (v != std::floor(v)) scene_error(at(key), "expected a whole number, got " + node_[key].Scalar());
+  if (v != std::floor(v))
+    scene_error(at(key), "expected a whole number, got " + node_[key].Scalar());
   return static_cast<int>(v);
 }
 bool MapReader::boolean(const std::string& key, bool fallback) {
@@ -138,7 +143,9 @@ bool MapReader::boolean(const std::string& key, bool fallback) {
     scene_error(at(key), "expected true or false, got " + describe(n));
   }
 }
-std::string MapReader::text(const std::string& key) { return as_text(node(key), at(key)); }
+std::string MapReader::text(const std::string& key) {
+  return as_text(node(key), at(key));
+}
 std::string MapReader::text(const std::string& key, const std::string& fallback) {
   return has(key) ? text(key) : (used_.insert(key), fallback);
 }

@@ -21,7 +21,7 @@ class MapReader {
   const std::string& path() const { return path_; }
   std::string at(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   bool has(const std::string& key) const;
-  YAML::Node node(const std::string& key);  // required
+  YAML::Node node(const std::string& key);      // required
   YAML::Node optional(const std::string& key);  // null if absent
 
   double number(const std::string& key);

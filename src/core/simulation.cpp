@@ -2,13 +2,13 @@
 
 #include <omp.h>
 
-#include <cmath>
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <sstream>
 #include <unordered_map>
-#include <array>
 
 namespace monosph {
 
@@ -31,8 +31,9 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
       g = static_cast<int>(it - continua.begin());
       if (it == continua.end()) continua.push_back(b.continuum);
     }
-    bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha, b.av_beta,
-                       b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi, b.hg_reference, g});
+    bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha,
+                       b.av_beta, b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi,
+                       b.hg_reference, g});
   }
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   if (!scene_.boundaries.empty()) {
@@ -41,7 +42,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
       const auto& bc = scene_.boundaries[k];
       std::vector<Expression> ex;
       for (int a = 0; a < static_cast<int>(bc.velocity_expr.size()); ++a)
-        ex.emplace_back(bc.velocity_expr[a], "boundary_conditions[" + std::to_string(k) + "].velocity");
+        ex.emplace_back(bc.velocity_expr[a],
+                        "boundary_conditions[" + std::to_string(k) + "].velocity");
       bc_velocity_.push_back(std::move(ex));
     }
     reactions_.assign(scene_.boundaries.size(), V::Zero());
@@ -59,9 +61,12 @@ void Simulation<D>::create_particles() {
     body.shape.bounds(lo, hi);
     std::array<long, D> k0, k1, nk;
     for (int a = 0; a < D; ++a) {
-      nk[a] = static_cast<long>(std::floor((scene_.domain_max[a] - scene_.domain_min[a]) / dp + 0.5));
-      k0[a] = std::max(0L, static_cast<long>(std::floor((lo[a] - scene_.domain_min[a]) / dp - 0.5)));
-      k1[a] = std::min(nk[a] - 1, static_cast<long>(std::ceil((hi[a] - scene_.domain_min[a]) / dp)));
+      nk[a] =
+          static_cast<long>(std::floor((scene_.domain_max[a] - scene_.domain_min[a]) / dp + 0.5));
+      k0[a] =
+          std::max(0L, static_cast<long>(std::floor((lo[a] - scene_.domain_min[a]) / dp - 0.5)));
+      k1[a] =
+          std::min(nk[a] - 1, static_cast<long>(std::ceil((hi[a] - scene_.domain_min[a]) / dp)));
     }
     std::vector<Point> pts;
     std::array<long, D> k = k0;
@@ -96,7 +101,8 @@ void Simulation<D>::create_particles() {
     std::uniform_real_distribution<double> uni(-1.0, 1.0);
     const Material& mat = scene_.materials[body.material];
     Expression rho_ex, vel_ex[3];
-    if (!body.density_expr.empty()) rho_ex = Expression(body.density_expr, body.name + ".initial.density");
+    if (!body.density_expr.empty())
+      rho_ex = Expression(body.density_expr, body.name + ".initial.density");
     for (std::size_t a = 0; a < body.velocity_expr.size(); ++a)
       vel_ex[a] = Expression(body.velocity_expr[a], body.name + ".initial.velocity");
     std::size_t first = p_.append(pts.size());
@@ -115,7 +121,8 @@ void Simulation<D>::create_particles() {
       rho[i] = rho_ex.empty() ? mat.density : rho_ex(xx, yy, zz, 0.0);
       if (!(rho[i] > 0))
         throw InputError("bodies[" + std::to_string(b) + "] (" + body.name +
-                         ").initial.density: not positive at a particle (" + std::to_string(rho[i]) + ")");
+                         ").initial.density: not positive at a particle (" +
+                         std::to_string(rho[i]) + ")");
       m[i] = rho[i] * vol;
       for (int a = 0; a < D; ++a)
         v[i][a] = body.velocity_expr.empty() ? 0.0 : vel_ex[a](xx, yy, zz, 0.0);
@@ -352,14 +359,16 @@ void Simulation<D>::check_guards() {
   int why = 0;  // 1 non-finite, 2 too fast
 #pragma omp parallel for schedule(static) reduction(max : bad)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!x[i].allFinite() || !v[i].allFinite() || !std::isfinite(rho[i])) bad = std::max(bad, long(i));
+    if (!x[i].allFinite() || !v[i].allFinite() || !std::isfinite(rho[i]))
+      bad = std::max(bad, long(i));
   }
   if (bad >= 0) why = 1;
   if (!why) {
     long fast = std::numeric_limits<long>::max();
 #pragma omp parallel for schedule(static) reduction(min : fast)
     for (std::size_t i = 0; i < n; ++i)
-      if (v[i].norm() > scene_.max_mach * scene_.materials[mt[i]].wave_speed()) fast = std::min(fast, long(i));
+      if (v[i].norm() > scene_.max_mach * scene_.materials[mt[i]].wave_speed())
+        fast = std::min(fast, long(i));
     if (fast != std::numeric_limits<long>::max()) bad = fast, why = 2;
   }
   std::ostringstream os;
@@ -374,8 +383,8 @@ void Simulation<D>::check_guards() {
     throw RunAborted(os.str());
   }
   if (min_i_ >= 0 && min_r_ < scene_.min_distance * scene_.dp) {
-    os << describe(min_i_) << " and particle id " << p_.id()[min_j_] << " are " << min_r_ / scene_.dp
-       << " dp apart (limit " << scene_.min_distance << " dp) at t = " << t_;
+    os << describe(min_i_) << " and particle id " << p_.id()[min_j_] << " are "
+       << min_r_ / scene_.dp << " dp apart (limit " << scene_.min_distance << " dp) at t = " << t_;
     throw RunAborted(os.str());
   }
 }

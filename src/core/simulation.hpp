@@ -22,15 +22,15 @@ class Module {
  public:
   virtual ~Module() = default;
   virtual std::string name() const = 0;
-  virtual void on_create(Simulation<D>&) {}            // fresh particles exist (not on restart)
-  virtual void sums(Simulation<D>&) {}                 // kernel sums at the new positions
-  virtual void rates(Simulation<D>&) {}                // rates from the half-step velocities
-  virtual void drift(Simulation<D>&, double dt) {}     // integrate module state over dt
-  virtual void constitutive(Simulation<D>&) {}         // per particle: EOS, stress
-  virtual void forces(Simulation<D>&) {}               // add to the acceleration
-  virtual void before_rebuild(Simulation<D>&) {}       // a rebuild follows (old list valid)
-  virtual void diagnostics(Simulation<D>&) {}          // fields for output and probes only
-  virtual void on_rebuild(Simulation<D>&) {}           // after a neighbour-list rebuild
+  virtual void on_create(Simulation<D>&) {}         // fresh particles exist (not on restart)
+  virtual void sums(Simulation<D>&) {}              // kernel sums at the new positions
+  virtual void rates(Simulation<D>&) {}             // rates from the half-step velocities
+  virtual void drift(Simulation<D>&, double dt) {}  // integrate module state over dt
+  virtual void constitutive(Simulation<D>&) {}      // per particle: EOS, stress
+  virtual void forces(Simulation<D>&) {}            // add to the acceleration
+  virtual void before_rebuild(Simulation<D>&) {}    // a rebuild follows (old list valid)
+  virtual void diagnostics(Simulation<D>&) {}       // fields for output and probes only
+  virtual void on_rebuild(Simulation<D>&) {}        // after a neighbour-list rebuild
   virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
 };
 
@@ -38,11 +38,11 @@ struct BodyInfo {
   std::string name;
   Phase phase;
   int material;
-  double av_alpha, av_beta;  // artificial viscosity (MMB Eq. 17-18)
-  double as_epsilon, as_n;   // artificial stress (MMB Eq. 19-20)
-  double delta;              // density diffusion (MMB Eq. 21)
+  double av_alpha, av_beta;       // artificial viscosity (MMB Eq. 17-18)
+  double as_epsilon, as_n;        // artificial stress (MMB Eq. 19-20)
+  double delta;                   // density diffusion (MMB Eq. 21)
   double hg_xi, hg_zeta, hg_chi;  // hourglass control (MMB Eq. 32-34)
-  int hg_reference;  // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
+  int hg_reference;               // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
   int group = 0;  // interaction group: bodies of one continuum share it (-1: all fluid)
 };
 

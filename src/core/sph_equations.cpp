@@ -93,7 +93,8 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   if (any_diffusion_) {
     cs_.resize(n);
     delta_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) cs_[i] = mats[mt[i]].sound_speed(), delta_[i] = bodies[bd[i]].delta;
+    for (std::size_t i = 0; i < n; ++i)
+      cs_[i] = mats[mt[i]].sound_speed(), delta_[i] = bodies[bd[i]].delta;
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -105,7 +106,8 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
       if (grp[j] != gi || pf[k] == 0.0) continue;
       const Vec<D> r = nb.rij(x[i], x[j], k);
       const double vj = m[j] / rho[j];
-      g.noalias() += (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
+      g.noalias() +=
+          (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
       if (any_diffusion_) {
         // MMB Eq. 21: Psi_ij . grad W_ij = 2 delta h c (rho_j - rho_i)/rho_i (x_j - x_i).(F r)/r^2
         const double delta = 0.5 * (delta_[i] + delta_[j]);
@@ -113,7 +115,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
         diff -= vj * 2.0 * delta * h * c * (rho[j] - rho[i]) * pf[k];
       }
     }
-    g = g * corr[i].transpose();  // corrected gradient: grad~W = L grad W (MMB Eq. 7, 16)
+    g = g * corr[i].transpose();           // corrected gradient: grad~W = L grad W (MMB Eq. 7, 16)
     drho[i] = -rho[i] * g.trace() + diff;  // MMB Eq. 11 (continuity + density diffusion)
     if (kgradv_ >= 0) gradv[i] = g;
   }
@@ -216,7 +218,8 @@ template <int D>
 double SphEquations<D>::max_dt(Simulation<D>& sim) {
   // Viscous criterion of the artificial viscosity (Monaghan 1992):
   // dt <= CFL h / (c + 0.6 (alpha c + beta max_j |phi_ij|)).
-  if (!any_av_ || phimax_.size() != sim.particles().size()) return std::numeric_limits<double>::infinity();
+  if (!any_av_ || phimax_.size() != sim.particles().size())
+    return std::numeric_limits<double>::infinity();
   const double h = sim.kernel().h();
   double dt = std::numeric_limits<double>::infinity();
   const std::size_t n = phimax_.size();

@@ -39,7 +39,9 @@ inline Mat3 update_deviatoric(const Mat3& S, const Mat3& L, double mu, double dt
 }
 
 // von Mises equivalent stress sqrt(3/2 S:S) (MMB Eq. 22).
-inline double von_mises(const Mat3& S) { return std::sqrt(1.5 * S.cwiseProduct(S).sum()); }
+inline double von_mises(const Mat3& S) {
+  return std::sqrt(1.5 * S.cwiseProduct(S).sum());
+}
 
 // Artificial stress tensor R (MMB Eq. 19-20): the tensile principal part of Sigma,
 // R = Q diag(max(sigma_a, 0)) Q^T with the eigenvectors of Sigma as columns of Q.

@@ -9,7 +9,9 @@
 namespace monosph {
 
 namespace {
-inline bool is_solid(std::int64_t ph) { return ph == kSolid; }
+inline bool is_solid(std::int64_t ph) {
+  return ph == kSolid;
+}
 }  // namespace
 
 template <int D>
@@ -69,7 +71,8 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    if (is_solid(ph[i])) S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
+    if (is_solid(ph[i]))
+      S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
 }
 
 template <int D>
@@ -97,7 +100,8 @@ void SolidModule<D>::constitutive(Simulation<D>& sim) {
       const double eps = bodies[bd[i]].as_epsilon;
       if (eps > 0) {
         // MMB Eq. 19-20: eps R_i, divided by rho^2 S as the stress term it corrects.
-        const Mat<D> sigma = Mat<D>(S[i].template topLeftCorner<D, D>()) - pr[i] * Mat<D>::Identity();
+        const Mat<D> sigma =
+            Mat<D>(S[i].template topLeftCorner<D, D>()) - pr[i] * Mat<D>::Identity();
         art[i] = eps * tensile_part<D>(sigma) / (rho[i] * rho[i] * shep[i]);
       } else {
         art[i].setZero();
@@ -136,7 +140,9 @@ void SolidModule<D>::sums(Simulation<D>& sim) {
 }
 
 template <int D>
-void SolidModule<D>::diagnostics(Simulation<D>& sim) { fit_deformation(sim, false); }
+void SolidModule<D>::diagnostics(Simulation<D>& sim) {
+  fit_deformation(sim, false);
+}
 
 template <int D>
 void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
@@ -281,7 +287,8 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     if (!is_solid(ph[i])) continue;
     const BodyInfo& b = bodies[bd[i]];
     const Material& mat = mats[mt[i]];
-    const double E = 9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
+    const double E =
+        9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
     const double cs = mat.sound_speed();
     const double vi = m[i] / rho[i];
     const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
@@ -300,7 +307,8 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       if (bd[j] != bd[i] || pw[k] == 0.0) continue;
       const Vec<D> d = -nb.rij(x[i], x[j], k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
       const double w = pw[k];
-      const Vec<D> X = inter ? Vec<D>(Xr[j] + nb.shift(k) - Xr[i]) : initial_difference(X0[j], X0[i]);
+      const Vec<D> X =
+          inter ? Vec<D>(Xr[j] + nb.shift(k) - Xr[i]) : initial_difference(X0[j], X0[i]);
       const double X2 = X.squaredNorm();
       const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
       const double e2 = eps.squaredNorm();
@@ -329,7 +337,9 @@ double SolidModule<D>::max_dt(Simulation<D>& sim) {
     if (b.phase != kSolid || b.hg_xi <= 0) continue;
     const Material& m = sim.materials()[b.material];
     const double E = 9 * m.bulk_modulus * m.shear_modulus / (3 * m.bulk_modulus + m.shear_modulus);
-    const double c = std::sqrt((m.bulk_modulus + 4 * m.shear_modulus / 3 + 0.5 * b.hg_xi * (1 - b.hg_chi) * E) / m.density);
+    const double c =
+        std::sqrt((m.bulk_modulus + 4 * m.shear_modulus / 3 + 0.5 * b.hg_xi * (1 - b.hg_chi) * E) /
+                  m.density);
     dt = std::min(dt, sim.scene().cfl * h / c);
   }
   return dt;

@@ -1,9 +1,9 @@
 #pragma once
 // Hourglass-controlled Eulerian SPH solids (Mohseni-Mofidi & Bierwisch 2020, "MMB", Sect. 2).
-// Jaumann-rate hypoelasticity (Eq. 14-16, objective Hughes-Winget update), artificial stress tensor (Eq. 19-20), deformation
-// gradient with an intermediate reference configuration (Eq. 28-30), error vector (Eq. 31) and
-// the stiffness, viscous and combined hourglass forces (Eq. 32-34). The momentum and continuity
-// equations with Sigma = -p I + S are the shared SphEquations (core).
+// Jaumann-rate hypoelasticity (Eq. 14-16, objective Hughes-Winget update), artificial stress tensor
+// (Eq. 19-20), deformation gradient with an intermediate reference configuration (Eq. 28-30), error
+// vector (Eq. 31) and the stiffness, viscous and combined hourglass forces (Eq. 32-34). The
+// momentum and continuity equations with Sigma = -p I + S are the shared SphEquations (core).
 #include <vector>
 
 #include "core/simulation.hpp"

@@ -33,7 +33,9 @@ const Case kCases[] = {
     {"output_unknown_field.yaml", "output.fields: no particle field 'vorticity'"},
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.file; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.file;
+}
 
 }  // namespace
 
@@ -41,8 +43,8 @@ class BadScene : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BadScene, ExitsWithCode2AndNamesTheProblem) {
   const Case& c = GetParam();
-  auto r = run_monosph("run " + source("tests/bad_input/scenes/") + c.file + " --out " + out_dir("bad") +
-                   " --quiet");
+  auto r = run_monosph("run " + source("tests/bad_input/scenes/") + c.file + " --out " +
+                       out_dir("bad") + " --quiet");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
   // One line, no stack trace.
@@ -57,18 +59,20 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BadScene, ::testing::ValuesIn(kCases), [](const
 TEST(BadInput, UnreadableSceneFile) {
   auto r = run_monosph("run /nonexistent/scene.yaml --quiet");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.output.find("/nonexistent/scene.yaml: cannot read scene file"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("/nonexistent/scene.yaml: cannot read scene file"), std::string::npos)
+      << r.output;
 }
 
 TEST(BadInput, UnwritableOutputFolder) {
-  auto r = run_monosph("run " + source("cases/acoustic_wave/scene.yaml") + " --out /proc/monosph-out --quiet");
+  auto r = run_monosph("run " + source("cases/acoustic_wave/scene.yaml") +
+                       " --out /proc/monosph-out --quiet");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("/proc/monosph-out"), std::string::npos) << r.output;
 }
 
 TEST(BadInput, UnknownSetKey) {
-  auto r = run_monosph("run " + source("cases/acoustic_wave/scene.yaml") + " --set time_stp.cfl=0.2 --quiet --out " +
-                   out_dir("bad"));
+  auto r = run_monosph("run " + source("cases/acoustic_wave/scene.yaml") +
+                       " --set time_stp.cfl=0.2 --quiet --out " + out_dir("bad"));
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("time_stp: unknown key"), std::string::npos) << r.output;
 }
@@ -83,7 +87,8 @@ TEST(BadInput, DivergingRunStopsWithDiagnosisAndLastFrame) {
   // A pressure blast far outside the weakly compressible regime: the run must stop with a named
   // particle, exit 3, and leave a last frame and a summary with the reason.
   const std::string out = out_dir("diverging");
-  auto d = run_monosph("run " + source("tests/bad_input/scenes/diverging.yaml") + " --quiet --out " + out);
+  auto d = run_monosph("run " + source("tests/bad_input/scenes/diverging.yaml") +
+                       " --quiet --out " + out);
   EXPECT_EQ(d.code, 3) << d.output;
   EXPECT_NE(d.output.find("particle id"), std::string::npos) << d.output;
   auto js = summary(out);

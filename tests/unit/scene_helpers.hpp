@@ -9,10 +9,12 @@
 namespace monosph::test {
 
 // A D-dimensional box of fluid filling [0,lx]x[0,ly](x[0,lz]); periodic axes as given ("x, y").
-inline Scene box_scene(int dim, double dp, double lx, double ly, double lz, const std::string& periodic,
-                       double jitter, const std::string& extra_body = "", const std::string& extra = "") {
+inline Scene box_scene(int dim, double dp, double lx, double ly, double lz,
+                       const std::string& periodic, double jitter,
+                       const std::string& extra_body = "", const std::string& extra = "") {
   std::string mn = dim == 2 ? "[0, 0]" : "[0, 0, 0]";
-  std::string mx = dim == 2 ? fmt::format("[{}, {}]", lx, ly) : fmt::format("[{}, {}, {}]", lx, ly, lz);
+  std::string mx =
+      dim == 2 ? fmt::format("[{}, {}]", lx, ly) : fmt::format("[{}, {}, {}]", lx, ly, lz);
   std::string text = fmt::format(R"(
 name: test
 dimension: {0}

@@ -1,8 +1,8 @@
 // Fixed and prescribed-velocity particle sets, body force and the reaction probe.
 #include <gtest/gtest.h>
 
-#include "core/sph_equations.hpp"
 #include "core/scene.hpp"
+#include "core/sph_equations.hpp"
 
 using namespace monosph;
 

@@ -17,8 +17,12 @@ Mat3 random_deviator(unsigned seed) {
   s -= s.trace() / 3 * Mat3::Identity();
   return s;
 }
-double j2(const Mat3& s) { return 0.5 * s.cwiseProduct(s).sum(); }
-double j3(const Mat3& s) { return s.determinant(); }
+double j2(const Mat3& s) {
+  return 0.5 * s.cwiseProduct(s).sum();
+}
+double j3(const Mat3& s) {
+  return s.determinant();
+}
 }  // namespace
 
 TEST(Jaumann, RigidRotationBy90DegreesKeepsInvariants) {

@@ -30,9 +30,9 @@ bodies:
     hourglass: {{xi: 1.0, zeta: 10, chi: 0.5}}
 end_time: 1
 )",
-                                 D, D == 2 ? "[-1, -1]" : "[-1, -1, -1]", D == 2 ? "[1, 1]" : "[1, 1, 1]",
-                                 D == 2 ? "[0, 0]" : "[0, 0, 0]", D == 2 ? "[0.16, 0.12]" : "[0.1, 0.08, 0.07]",
-                                 jitter);
+                                 D, D == 2 ? "[-1, -1]" : "[-1, -1, -1]",
+                                 D == 2 ? "[1, 1]" : "[1, 1, 1]", D == 2 ? "[0, 0]" : "[0, 0, 0]",
+                                 D == 2 ? "[0.16, 0.12]" : "[0.1, 0.08, 0.07]", jitter);
   return load_scene_text(text);
 }
 
@@ -107,8 +107,12 @@ void affine_motion_gives_no_force() {
 
 }  // namespace
 
-TEST(Hourglass, AffineMotionGivesNoForce2D) { affine_motion_gives_no_force<2>(); }
-TEST(Hourglass, AffineMotionGivesNoForce3D) { affine_motion_gives_no_force<3>(); }
+TEST(Hourglass, AffineMotionGivesNoForce2D) {
+  affine_motion_gives_no_force<2>();
+}
+TEST(Hourglass, AffineMotionGivesNoForce3D) {
+  affine_motion_gives_no_force<3>();
+}
 
 TEST(Hourglass, PerturbedParticleIsPushedBackAndMomentumIsConserved) {
   Rig<2> rig(0.0);

@@ -29,7 +29,9 @@ inline Result run_monosph(const std::string& args) {
   return r;
 }
 
-inline std::string source(const std::string& rel) { return std::string(MONOSPH_SOURCE_DIR) + "/" + rel; }
+inline std::string source(const std::string& rel) {
+  return std::string(MONOSPH_SOURCE_DIR) + "/" + rel;
+}
 inline std::string out_dir(const std::string& name) {
   auto d = std::filesystem::path(MONOSPH_TEST_OUT) / name;
   std::filesystem::remove_all(d);
@@ -63,7 +65,8 @@ inline Table read_csv(const std::string& file) {
   while (std::getline(in, line)) {
     std::stringstream ls(line);
     std::size_t k = 0;
-    for (std::string c; std::getline(ls, c, ',') && k < t.cols.size(); ++k) t.cols[k].push_back(std::stod(c));
+    for (std::string c; std::getline(ls, c, ',') && k < t.cols.size(); ++k)
+      t.cols[k].push_back(std::stod(c));
   }
   return t;
 }

@@ -17,7 +17,8 @@ using namespace monosph::test;
 
 TEST(AcousticWave, FrequencyMassAndMomentum) {
   const std::string out = out_dir("acoustic_wave");
-  auto r = run_monosph("run " + source("cases/acoustic_wave/scene.yaml") + " --out " + out + " --quiet");
+  auto r =
+      run_monosph("run " + source("cases/acoustic_wave/scene.yaml") + " --out " + out + " --quiet");
   ASSERT_EQ(r.code, 0) << r.output;
   auto js = summary(out);
   EXPECT_EQ(js["status"], "completed");
@@ -59,9 +60,11 @@ TEST(AcousticWave, RestartEqualsUninterruptedRun) {
   const std::string full = out_dir("restart_full"), half = out_dir("restart_half");
   const std::string opts = " --set end_time=0.006 output.checkpoint_every=0.003 --quiet";
   ASSERT_EQ(run_monosph("run " + scene + " --out " + full + opts).code, 0);
-  auto a = run_monosph("run " + scene + " --out " + half + " --set end_time=0.003 output.checkpoint_every=0.003 --quiet");
+  auto a = run_monosph("run " + scene + " --out " + half +
+                       " --set end_time=0.003 output.checkpoint_every=0.003 --quiet");
   ASSERT_EQ(a.code, 0) << a.output;
-  auto b = run_monosph("run --restart " + half + "/final.h5 --out " + half + " --set end_time=0.006 --quiet");
+  auto b = run_monosph("run --restart " + half + "/final.h5 --out " + half +
+                       " --set end_time=0.006 --quiet");
   ASSERT_EQ(b.code, 0) << b.output;
   monosph::Particles<2> pa, pb;
   auto ma = monosph::read_checkpoint<2>(full + "/final.h5", pa);

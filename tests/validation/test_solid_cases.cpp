@@ -8,15 +8,20 @@
 using namespace monosph::test;
 
 namespace {
-double max_of(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
-double min_of(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+double max_of(const std::vector<double>& v) {
+  return *std::max_element(v.begin(), v.end());
+}
+double min_of(const std::vector<double>& v) {
+  return *std::min_element(v.begin(), v.end());
+}
 }  // namespace
 
 TEST(OscillatingPlate, CoarsePeriodAndCoherence) {
   // 10 particles across (dp = 2 mm), 0.6 s: more than two periods.
   const std::string out = out_dir("plate_coarse");
-  auto r = run_monosph("run " + source("cases/oscillating_plate/scene.yaml") + " --out " + out +
-                       " --quiet --set dp=0.002 end_time=0.6 output.every=0.3 output.checkpoint_every=0");
+  auto r = run_monosph(
+      "run " + source("cases/oscillating_plate/scene.yaml") + " --out " + out +
+      " --quiet --set dp=0.002 end_time=0.6 output.every=0.3 output.checkpoint_every=0");
   ASSERT_EQ(r.code, 0) << r.output;
   auto js = summary(out);
   EXPECT_LT(js["metrics"]["period"]["relative_error"].get<double>(), 0.03);
