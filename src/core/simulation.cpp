@@ -36,6 +36,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
                        b.hg_reference, g});
   }
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
+  for (const auto& m : scene_.materials) wave_speed_.push_back(m.wave_speed());
   if (!scene_.boundaries.empty()) {
     kbc_ = p_.add_field("boundary", 1, FieldType::Int, false);
     for (std::size_t k = 0; k < scene_.boundaries.size(); ++k) {
@@ -238,7 +239,6 @@ void Simulation<D>::drift(double dt) {
 template <int D>
 void Simulation<D>::update_pair_cache() {
   auto x = p_.x();
-  auto ph = p_.phase();
   auto bd = p_.body();
   const std::size_t n = p_.size();
   pw_.resize(nb_.pairs());
@@ -292,8 +292,7 @@ double Simulation<D>::compute_dt() {
   auto mt = p_.material();
   const std::size_t n = p_.size();
   const double h = kernel_.h();
-  std::vector<double> c(scene_.materials.size());
-  for (std::size_t k = 0; k < c.size(); ++k) c[k] = scene_.materials[k].wave_speed();
+  const auto& c = wave_speed_;
   double dt_ac = std::numeric_limits<double>::infinity(), dt_f = dt_ac;
 #pragma omp parallel for reduction(min : dt_ac, dt_f) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -367,7 +366,7 @@ void Simulation<D>::check_guards() {
     long fast = std::numeric_limits<long>::max();
 #pragma omp parallel for schedule(static) reduction(min : fast)
     for (std::size_t i = 0; i < n; ++i)
-      if (v[i].norm() > scene_.max_mach * scene_.materials[mt[i]].wave_speed())
+      if (v[i].norm() > scene_.max_mach * wave_speed_[mt[i]])
         fast = std::min(fast, long(i));
     if (fast != std::numeric_limits<long>::max()) bad = fast, why = 2;
   }

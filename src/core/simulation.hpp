@@ -121,6 +121,7 @@ class Simulation {
   long step_ = 0;
   double min_r_ = 0;
   std::vector<double> pw_, pf_, rmin_;
+  std::vector<double> wave_speed_;  // per material, sqrt((K + 4 mu/3)/rho0)
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;
   bool rebuild_requested_ = false;
