@@ -379,6 +379,14 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("density_diffusion");
       }
+      if (b.has("stress_divergence")) {
+        if (body.phase != "solid")
+          scene_error(p + ".stress_divergence", "applies to solid bodies only");
+        body.corrected_divergence =
+            b.choice("stress_divergence", {"normalised", "corrected"}) == "corrected";
+      } else {
+        b.optional("stress_divergence");
+      }
       if (b.has("hourglass")) {
         if (body.phase != "solid")
           scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
@@ -407,6 +415,16 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
                                         std::to_string(s.domain_max[a]) + "])");
       s.bodies.push_back(std::move(body));
     }
+    // Bodies of one continuum share one stress divergence (their pairs use both particles' terms).
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (s.bodies[i].phase == "solid" && s.bodies[j].phase == "solid" &&
+            s.bodies[i].continuum == s.bodies[j].continuum &&
+            s.bodies[i].corrected_divergence != s.bodies[j].corrected_divergence)
+          scene_error(
+              "bodies[" + std::to_string(i) + "] (" + s.bodies[i].name + ").stress_divergence",
+              "differs from body '" + s.bodies[j].name + "' of the same continuum '" +
+                  s.bodies[i].continuum + "'");
     // A solid body needs the solid module: switch it on.
     for (const auto& body : s.bodies)
       if (body.phase == "solid" &&

@@ -51,6 +51,9 @@ struct BodySpec {
   double delta = 0;                           // density diffusion (MMB Eq. 21)
   double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
   int hg_reference = 0;  // error vector against: 0 initial (MMB), 1 intermediate, 2 least squares
+  // Stress divergence: false = normalised gradient (MMB Eq. 10-11); true = corrected gradient,
+  // the adjoint of the corrected velocity gradient (Bonet & Lok 1999; docs/theory.md).
+  bool corrected_divergence = false;
 };
 
 struct BoundarySpec {

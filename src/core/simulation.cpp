@@ -33,7 +33,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     }
     bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha,
                        b.av_beta, b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi,
-                       b.hg_reference, g});
+                       b.hg_reference, b.corrected_divergence, g});
   }
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   for (const auto& m : scene_.materials) wave_speed_.push_back(m.wave_speed());
@@ -366,8 +366,7 @@ void Simulation<D>::check_guards() {
     long fast = std::numeric_limits<long>::max();
 #pragma omp parallel for schedule(static) reduction(min : fast)
     for (std::size_t i = 0; i < n; ++i)
-      if (v[i].norm() > scene_.max_mach * wave_speed_[mt[i]])
-        fast = std::min(fast, long(i));
+      if (v[i].norm() > scene_.max_mach * wave_speed_[mt[i]]) fast = std::min(fast, long(i));
     if (fast != std::numeric_limits<long>::max()) bad = fast, why = 2;
   }
   std::ostringstream os;

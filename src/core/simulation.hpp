@@ -38,11 +38,12 @@ struct BodyInfo {
   std::string name;
   Phase phase;
   int material;
-  double av_alpha, av_beta;       // artificial viscosity (MMB Eq. 17-18)
-  double as_epsilon, as_n;        // artificial stress (MMB Eq. 19-20)
-  double delta;                   // density diffusion (MMB Eq. 21)
-  double hg_xi, hg_zeta, hg_chi;  // hourglass control (MMB Eq. 32-34)
-  int hg_reference;               // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
+  double av_alpha, av_beta;           // artificial viscosity (MMB Eq. 17-18)
+  double as_epsilon, as_n;            // artificial stress (MMB Eq. 19-20)
+  double delta;                       // density diffusion (MMB Eq. 21)
+  double hg_xi, hg_zeta, hg_chi;      // hourglass control (MMB Eq. 32-34)
+  int hg_reference;                   // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
+  bool corrected_divergence = false;  // stress divergence with L_i (Bonet & Lok) or 1/S_i (MMB)
   int group = 0;  // interaction group: bodies of one continuum share it (-1: all fluid)
 };
 

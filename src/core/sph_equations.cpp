@@ -153,6 +153,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   auto bd = p.body();
   auto mt = p.material();
   auto shep = p.template view<double>(kshep_);
+  auto corr = p.template view<Mat<D>>(kcorr_);
   if (kstress_ < 0) kstress_ = p.find("deviatoric_stress");
   std::span<Mat3> dev;
   if (kstress_ >= 0) dev = p.template view<Mat3>(kstress_);
@@ -165,18 +166,29 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   const double h = W.h(), eta2 = 0.01 * h * h;
   const std::size_t n = p.size();
   sig_.resize(n);
+  wpair_.resize(n);
   if (any_av_) {
     cs_.resize(n);
     alpha_.resize(n);
     beta_.resize(n);
     phimax_.assign(n, 0.0);
   }
-  // Sigma_i / (rho_i^2 S_i), the per-particle factor of the normalised stress divergence.
+  // Per-particle factor T_i of the stress divergence a_i = c_i sum_j w_j (T_i + T_j) grad_i W_ij:
+  // normalised (MMB Eq. 10-11): T = Sigma/(rho^2 S), w_j = m_j, c_i = 1;
+  // corrected (Bonet & Lok 1999): T = Sigma L, w_j = V_j, c_i = 1/rho_i -- the exact adjoint of the
+  // corrected velocity gradient (Eq. 16), so that sum_i m_i a_i.v_i = -sum_i V_i Sigma_i : grad
+  // v_i.
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Mat<D> s = -pr[i] * Mat<D>::Identity();
     if (kstress_ >= 0) s += dev[i].template topLeftCorner<D, D>();  // MMB Eq. 12
-    sig_[i] = s / (rho[i] * rho[i] * shep[i]);
+    if (bodies[bd[i]].corrected_divergence) {
+      sig_[i] = s * corr[i];
+      wpair_[i] = m[i] / rho[i];
+    } else {
+      sig_[i] = s / (rho[i] * rho[i] * shep[i]);
+      wpair_[i] = m[i];
+    }
     if (any_av_) {
       cs_[i] = mats[mt[i]].sound_speed();
       alpha_[i] = bodies[bd[i]].av_alpha;
@@ -187,17 +199,17 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     const int gi = grp[i];
     const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
-    Vec<D> acc = Vec<D>::Zero();
+    Vec<D> acc = Vec<D>::Zero(), accs = Vec<D>::Zero();
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
       if (grp[j] != gi || pf[k] == 0.0) continue;
       const Vec<D> r = nb.rij(x[i], x[j], k);
       const Vec<D> gw = pf[k] * r;  // grad_i W_ij
-      // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij
-      Mat<D> sum = sig_[i] + sig_[j];
+      // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij (or corrected)
+      accs.noalias() += wpair_[j] * ((sig_[i] + sig_[j]) * gw);
+      Vec<D> f = Vec<D>::Zero();
       // MMB Eq. 11, 19-20: artificial stress eps R f_ij^n (art = eps R / (rho^2 S), same body).
-      if (kas_ >= 0 && as_eps > 0) sum -= std::pow(pw[k] / wdp, as_n) * (art[i] + art[j]);
-      Vec<D> f = sum * gw;
+      if (kas_ >= 0 && as_eps > 0) f -= std::pow(pw[k] / wdp, as_n) * ((art[i] + art[j]) * gw);
       if (any_av_) {  // MMB Eq. 17-18: artificial viscosity, only for approaching pairs
         const double vr = (v[i] - v[j]).dot(r);
         if (vr < 0) {
@@ -210,7 +222,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
       }
       acc += m[j] * f;
     }
-    a[i] += acc;
+    a[i] += acc + (bodies[bd[i]].corrected_divergence ? accs / rho[i] : accs);
   }
 }
 
