@@ -186,7 +186,7 @@ template <int D>
 void Simulation<D>::rebuild_neighbours() {
   rebuild_requested_ = true;
   update_neighbours();
-  update_pair_cache();  // pw_/pf_/group_ are indexed by the list just rebuilt (and reordered)
+  update_pair_cache();  // pairs_/group_ are indexed by the list just rebuilt (and reordered)
 }
 
 template <int D>
@@ -241,8 +241,14 @@ void Simulation<D>::update_pair_cache() {
   auto x = p_.x();
   auto bd = p_.body();
   const std::size_t n = p_.size();
-  pw_.resize(nb_.pairs());
-  pf_.resize(nb_.pairs());
+  const double rs2 = kernel_.radius() * kernel_.radius();
+  auto& pl = pairs_;
+  pl.first.resize(n + 1);
+  pl.count.resize(n);
+  pl.j.resize(nb_.pairs());
+  pl.r.resize(nb_.pairs());
+  pl.w.resize(nb_.pairs());
+  pl.f.resize(nb_.pairs());
   group_.resize(n);
   rmin_.resize(n);
   jmin_.resize(n);
@@ -251,15 +257,24 @@ void Simulation<D>::update_pair_cache() {
     group_[i] = bodies_[bd[i]].group;
     double best = std::numeric_limits<double>::infinity();
     int jb = -1;
+    std::size_t q = nb_.begin(i);
+    pl.first[i] = q;
     for (std::size_t k = nb_.begin(i); k < nb_.end(i); ++k) {
       const int j = nb_.nbr(k);
-      const double r2 = nb_.rij(x[i], x[j], k).squaredNorm();
-      kernel_.wf(r2, pw_[k], pf_[k]);
+      const V r = nb_.rij(x[i], x[j], k);
+      const double r2 = r.squaredNorm();
       if (r2 < best) best = r2, jb = j;
+      if (r2 >= rs2) continue;
+      pl.j[q] = j;
+      pl.r[q] = r;
+      kernel_.wf(r2, pl.w[q], pl.f[q]);
+      ++q;
     }
+    pl.count[i] = static_cast<int>(q - pl.first[i]);
     rmin_[i] = std::sqrt(best);
     jmin_[i] = jb;
   }
+  pl.first[n] = nb_.pairs();
   min_r_ = std::numeric_limits<double>::infinity();
   min_i_ = min_j_ = -1;
   for (std::size_t i = 0; i < n; ++i)

@@ -34,6 +34,20 @@ class Module {
   virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
 };
 
+// Pairs within the kernel support at the current positions, rebuilt with every force evaluation
+// and valid until the next drift: for particle i, entries begin(i) <= k < end(i) hold the
+// neighbour j, r = x_i - x_j (periodic image included), W(r) and F(r) = W'(r)/r, so that
+// grad_i W_ij = F r. Every pair pass streams through these arrays.
+template <int D>
+struct PairList {
+  std::vector<std::size_t> first;  // n + 1 offsets (slots of the Verlet list)
+  std::vector<int> count, j;
+  std::vector<Vec<D>> r;
+  std::vector<double> w, f;
+  std::size_t begin(std::size_t i) const { return first[i]; }
+  std::size_t end(std::size_t i) const { return first[i] + count[i]; }
+};
+
 struct BodyInfo {
   std::string name;
   Phase phase;
@@ -61,6 +75,9 @@ class Simulation {
   // One kick-drift-kick step, shortened so as not to pass `stop`. Throws RunAborted (with a
   // diagnosis) if a guard trips.
   void advance(double stop = std::numeric_limits<double>::infinity());
+  // Recomputes the pair list (PairList) at the current positions: needed after moving particles
+  // by hand (tests); a step does it itself.
+  void update_pair_cache();
   // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
   void rebuild_neighbours();
   // Diagnostic fields (e.g. the disorder measure) before output or probes.
@@ -85,10 +102,8 @@ class Simulation {
 
   // Smallest pair distance seen in the last force pass (set by the pair-force module).
   double min_distance() const { return min_r_; }
-  // Kernel values per Verlet pair at the current positions, valid from the force evaluation of a
-  // step until the next drift: W(r_k) and F(r_k) = W'(r_k)/r_k (zero beyond the support).
-  const std::vector<double>& pair_w() const { return pw_; }
-  const std::vector<double>& pair_f() const { return pf_; }
+  // Pairs within the support at the current positions (see PairList).
+  const PairList<D>& pairs() const { return pairs_; }
   // Interaction group of each particle: -1 for fluid (one continuum); for solids, the body or
   // the continuum several bodies share.
   const std::vector<int>& group() const { return group_; }
@@ -103,7 +118,6 @@ class Simulation {
   void drift(double dt);
   void update_neighbours();
   void compute_forces();
-  void update_pair_cache();
   double compute_dt();
   void check_guards();
   void apply_bc_velocity(double t);
@@ -121,7 +135,8 @@ class Simulation {
   double t_ = 0, dt_ = 0, dt0_ = 0;
   long step_ = 0;
   double min_r_ = 0;
-  std::vector<double> pw_, pf_, rmin_;
+  PairList<D> pairs_;
+  std::vector<double> rmin_;
   std::vector<double> wave_speed_;  // per material, sqrt((K + 4 mu/3)/rho0)
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;

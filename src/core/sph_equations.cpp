@@ -38,9 +38,9 @@ SphEquations<D>::SphEquations(Simulation<D>& sim, bool store_velocity_gradient) 
 template <int D>
 void SphEquations<D>::sums(Simulation<D>& sim) {
   auto& p = sim.particles();
-  const auto& nb = sim.neighbours();
-  const auto& pw = sim.pair_w();
-  const auto& pf = sim.pair_f();
+  const auto& pl = sim.pairs();
+  const auto& pw = pl.w;
+  const auto& pf = pl.f;
   const auto& grp = sim.group();
   auto x = p.x();
   auto m = p.m();
@@ -57,10 +57,10 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
     const int gi = grp[i];
     double s = vol_[i] * w0;
     Mat<D> b = Mat<D>::Zero();
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.nbr(k);
-      if (grp[j] != gi || pw[k] == 0.0) continue;
-      const Vec<D> r = nb.rij(x[i], x[j], k);
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (grp[j] != gi) continue;
+      const Vec<D>& r = pl.r[k];
       s += vol_[j] * pw[k];
       // (x_j - x_i) (x) grad_i W_ij = (-r) (x) (F r)   (MMB Eq. 9)
       b.noalias() -= (vol_[j] * pf[k]) * (r * r.transpose());
@@ -73,8 +73,8 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
 template <int D>
 void SphEquations<D>::rates(Simulation<D>& sim) {
   auto& p = sim.particles();
-  const auto& nb = sim.neighbours();
-  const auto& pf = sim.pair_f();
+  const auto& pl = sim.pairs();
+  const auto& pf = pl.f;
   const auto& grp = sim.group();
   auto x = p.x();
   auto v = p.v();
@@ -101,10 +101,10 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
     const int gi = grp[i];
     Mat<D> g = Mat<D>::Zero();
     double diff = 0;
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.nbr(k);
-      if (grp[j] != gi || pf[k] == 0.0) continue;
-      const Vec<D> r = nb.rij(x[i], x[j], k);
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (grp[j] != gi) continue;
+      const Vec<D>& r = pl.r[k];
       const double vj = m[j] / rho[j];
       g.noalias() +=
           (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
@@ -139,10 +139,10 @@ void SphEquations<D>::constitutive(Simulation<D>& sim) {
 template <int D>
 void SphEquations<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
-  const auto& nb = sim.neighbours();
+  const auto& pl = sim.pairs();
   const auto& W = sim.kernel();
-  const auto& pw = sim.pair_w();
-  const auto& pf = sim.pair_f();
+  const auto& pw = pl.w;
+  const auto& pf = pl.f;
   const auto& grp = sim.group();
   auto x = p.x();
   auto v = p.v();
@@ -200,10 +200,10 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
     const int gi = grp[i];
     const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
     Vec<D> acc = Vec<D>::Zero(), accs = Vec<D>::Zero();
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.nbr(k);
-      if (grp[j] != gi || pf[k] == 0.0) continue;
-      const Vec<D> r = nb.rij(x[i], x[j], k);
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (grp[j] != gi) continue;
+      const Vec<D>& r = pl.r[k];
       const Vec<D> gw = pf[k] * r;  // grad_i W_ij
       // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij (or corrected)
       accs.noalias() += wpair_[j] * ((sig_[i] + sig_[j]) * gw);

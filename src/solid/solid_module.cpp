@@ -147,9 +147,8 @@ void SolidModule<D>::diagnostics(Simulation<D>& sim) {
 template <int D>
 void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
   auto& p = sim.particles();
-  const auto& nb = sim.neighbours();
-  const auto& pw = sim.pair_w();
-  auto x = p.x();
+  const auto& pl = sim.pairs();
+  const auto& pw = pl.w;
   auto ph = p.phase();
   auto bd = p.body();
   auto X0 = p.template view<Vec<D>>(kX0_);
@@ -158,16 +157,16 @@ void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
   if (kFls_ >= 0) fls = p.template view<Mat<D>>(kFls_);
   const double dp = sim.dp();
   const std::size_t n = p.size();
-  if (pw.size() != nb.pairs()) return;
+  if (pl.count.size() != n) return;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     Mat<D> A = Mat<D>::Zero(), B = Mat<D>::Zero();
     double den = 0;
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.nbr(k);
-      if (bd[j] != bd[i] || pw[k] == 0.0) continue;
-      const Vec<D> d = -nb.rij(x[i], x[j], k);
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (bd[j] != bd[i]) continue;
+      const Vec<D> d = -pl.r[k];
       const Vec<D> X = initial_difference(X0[j], X0[i]);
       A.noalias() += pw[k] * d * X.transpose();
       B.noalias() += pw[k] * X * X.transpose();
@@ -180,10 +179,10 @@ void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
     }
     const Mat<D> F = A * Mat<D>(B.inverse());
     double res = 0;
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.nbr(k);
-      if (bd[j] != bd[i] || pw[k] == 0.0) continue;
-      const Vec<D> d = -nb.rij(x[i], x[j], k);
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (bd[j] != bd[i]) continue;
+      const Vec<D> d = -pl.r[k];
       res += pw[k] * (d - F * initial_difference(X0[j], X0[i])).squaredNorm();
     }
     dis[i] = std::sqrt(res / den) / dp;
@@ -261,9 +260,9 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
 template <int D>
 void SolidModule<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
-  const auto& nb = sim.neighbours();
-  const auto& pw = sim.pair_w();
-  const auto& pf = sim.pair_f();
+  const auto& pl = sim.pairs();
+  const auto& pw = pl.w;
+  const auto& pf = pl.f;
   auto x = p.x();
   auto v = p.v();
   auto a = p.a();
@@ -302,13 +301,13 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const auto& F = b.hg_reference == 0 ? Ftot : inter ? Fref : Fls;
     const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.nbr(k);
-      if (bd[j] != bd[i] || pw[k] == 0.0) continue;
-      const Vec<D> d = -nb.rij(x[i], x[j], k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (bd[j] != bd[i]) continue;
+      const Vec<D> d = -pl.r[k];  // x_ij = x_j - x_i (Ganzenmueller's convention)
       const double w = pw[k];
-      const Vec<D> X =
-          inter ? Vec<D>(Xr[j] + nb.shift(k) - Xr[i]) : initial_difference(X0[j], X0[i]);
+      const Vec<D> X = inter ? Vec<D>(Xr[j] + (x[i] - x[j] - pl.r[k]) - Xr[i])
+                             : initial_difference(X0[j], X0[i]);
       const double X2 = X.squaredNorm();
       const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
       const double e2 = eps.squaredNorm();

@@ -58,6 +58,7 @@ struct Rig {
       p.v()[i] = B * X0[i];
     }
     if (rebuild) sim->rebuild_neighbours();
+    sim->update_pair_cache();
     for (auto& m : sim->modules()) m->sums(*sim);
     for (auto& m : sim->modules()) m->constitutive(*sim);
     for (auto& a : p.a()) a.setZero();
@@ -123,6 +124,7 @@ TEST(Hourglass, PerturbedParticleIsPushedBackAndMomentumIsConserved) {
     if ((p.x()[i] - Vec<2>(0.08, 0.06)).norm() < (p.x()[c] - Vec<2>(0.08, 0.06)).norm()) c = i;
   const Vec<2> du(0.001, 0.0004);
   p.x()[c] += du;
+  rig.sim->update_pair_cache();
   for (auto& m : rig.sim->modules()) m->sums(*rig.sim);
   for (auto& a : p.a()) a.setZero();
   // Velocities that push the particle further off, so the viscous part acts too.
