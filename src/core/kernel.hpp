@@ -1,6 +1,7 @@
 #pragma once
 // SPH kernels: value W(r) and gradient factor F(r) = W'(r)/r, so that grad_i W_ij = F(r) (x_i -
 // x_j).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -104,6 +105,18 @@ class Kernel {
   }
 
   double dw(double r) const { return f(r) * r; }
+
+  // W and F of the cubic spline without branches on q (the pair pass evaluates millions of them
+  // per step, with q on either side of 1 at random): with a = max(2 - q, 0), b = max(1 - q, 0),
+  // S = a^3 - 4 b^3 and S'(q)/q = (-3 a^2 + 12 b^2)/q = 9q - 12 for q < 1.
+  void wf_cubic(double r2, double& wv, double& fv) const {
+    const double q = std::sqrt(r2) * inv_h_;
+    const double a = std::max(2.0 - q, 0.0), b = std::max(1.0 - q, 0.0);
+    wv = k_ * (a * a * a - 4.0 * b * b * b);
+    const double c = k_ * inv_h_ * inv_h_;
+    const double inner = 9.0 * q - 12.0, outer = -3.0 * a * a / std::max(q, 1.0);
+    fv = c * (q < 1.0 ? inner : outer);
+  }
 
   // W and F together from the squared distance (one root, no work beyond the support).
   void wf(double r2, double& wv, double& fv) const {

@@ -242,6 +242,7 @@ void Simulation<D>::update_pair_cache() {
   auto bd = p_.body();
   const std::size_t n = p_.size();
   const double rs2 = kernel_.radius() * kernel_.radius();
+  const Kernel<D> W = kernel_;  // a local copy: the stores below cannot alias its parameters
   auto& pl = pairs_;
   pl.first.resize(n + 1);
   pl.count.resize(n);
@@ -252,6 +253,7 @@ void Simulation<D>::update_pair_cache() {
   group_.resize(n);
   rmin_.resize(n);
   jmin_.resize(n);
+  const bool cubic = W.type() == KernelType::CubicSpline;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;
@@ -264,11 +266,14 @@ void Simulation<D>::update_pair_cache() {
       const V r = nb_.rij(x[i], x[j], k);
       const double r2 = r.squaredNorm();
       if (r2 < best) best = r2, jb = j;
-      if (r2 >= rs2) continue;
+      // Branch-free compaction: the slot is written always and kept if inside the support.
       pl.j[q] = j;
       pl.r[q] = r;
-      kernel_.wf(r2, pl.w[q], pl.f[q]);
-      ++q;
+      if (cubic)
+        W.wf_cubic(r2, pl.w[q], pl.f[q]);
+      else
+        W.wf(r2, pl.w[q], pl.f[q]);
+      q += r2 < rs2;
     }
     pl.count[i] = static_cast<int>(q - pl.first[i]);
     rmin_[i] = std::sqrt(best);

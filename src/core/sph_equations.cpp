@@ -207,6 +207,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
       const Vec<D> gw = pf[k] * r;  // grad_i W_ij
       // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij (or corrected)
       accs.noalias() += wpair_[j] * ((sig_[i] + sig_[j]) * gw);
+      if (!any_av_ && !(kas_ >= 0 && as_eps > 0)) continue;
       Vec<D> f = Vec<D>::Zero();
       // MMB Eq. 11, 19-20: artificial stress eps R f_ij^n (art = eps R / (rho^2 S), same body).
       if (kas_ >= 0 && as_eps > 0) f -= std::pow(pw[k] / wdp, as_n) * ((art[i] + art[j]) * gw);

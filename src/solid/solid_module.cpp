@@ -1,5 +1,6 @@
 #include "solid_module.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -281,6 +282,10 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   const auto& mats = sim.materials();
   const double h = sim.kernel().h(), eta2 = 0.01 * h * h;
   const std::size_t n = p.size();
+  const bool wrap = std::any_of(periodic_.begin(), periodic_.end(), [](bool b) { return b; });
+  vol_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) vol_[i] = m[i] / rho[i];
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
@@ -289,7 +294,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const double E =
         9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
     const double cs = mat.sound_speed();
-    const double vi = m[i] / rho[i];
+    const double vi = vol_[i];
     const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
     const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi * E;
     const double kvisc = -b.hg_zeta * b.hg_chi * m[i] * cs * h;
@@ -306,20 +311,24 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       if (bd[j] != bd[i]) continue;
       const Vec<D> d = -pl.r[k];  // x_ij = x_j - x_i (Ganzenmueller's convention)
       const double w = pw[k];
-      const Vec<D> X = inter ? Vec<D>(Xr[j] + (x[i] - x[j] - pl.r[k]) - Xr[i])
-                             : initial_difference(X0[j], X0[i]);
+      const Vec<D> X = inter  ? Vec<D>(Xr[j] + (x[i] - x[j] - pl.r[k]) - Xr[i])
+                       : wrap ? initial_difference(X0[j], X0[i])
+                              : Vec<D>(X0[j] - X0[i]);
       const double X2 = X.squaredNorm();
       const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
-      const double e2 = eps.squaredNorm();
       const double r2 = d.squaredNorm();
       const double ed = eps.dot(d);  // (eps . x_ij), |x_ij| times the projection
       // MMB Eq. 32: stiffness-based force along the current pair direction (1 - chi: Eq. 34).
-      f += (kstiff * (m[j] / rho[j]) * w / X2 * ed / r2) * d;
+      f += (kstiff * vol_[j] * w * ed / (X2 * r2)) * d;
       // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).
-      const double vr = (v[j] - v[i]).dot(d);
-      if (kvisc != 0 && vr * ed < 0) {
-        const double rbar = 0.5 * (rho[i] + rho[j]);
-        f += (kvisc * m[j] / rbar * std::sqrt(e2 / X2) * vr / (r2 + eta2) * pf[k]) * d;
+      if (kvisc != 0) {
+        const double vr = (v[j] - v[i]).dot(d);
+        if (vr * ed < 0) {
+          const double rbar = 0.5 * (rho[i] + rho[j]);
+          f +=
+              (kvisc * m[j] / rbar * std::sqrt(eps.squaredNorm() / X2) * vr / (r2 + eta2) * pf[k]) *
+              d;
+        }
       }
     }
     a[i] += f / m[i];

@@ -88,3 +88,20 @@ TEST(Kernel, GradientFactorIsDerivativeOverR) {
     EXPECT_NEAR(w2.f(0.0), w2.f(1e-7), 1e-4 * std::abs(w2.f(0.0)) + 1e-9) << kernel_name(t);
   }
 }
+
+TEST(Kernel, BranchFreeCubicSplineMatchesTheReference) {
+  // wf_cubic (the pair-list fast path) against w() and f() on both sides of q = 1 and 2.
+  const double h = 0.013;
+  Kernel<2> w2(KernelType::CubicSpline, h);
+  Kernel<3> w3(KernelType::CubicSpline, h);
+  for (double q = 0.0; q < 2.0; q += 0.0137) {
+    const double r = q * h;
+    double a, b;
+    w2.wf_cubic(r * r, a, b);
+    EXPECT_NEAR(a, w2.w(r), 1e-12 * w2.w(0)) << q;
+    EXPECT_NEAR(b, w2.f(r), 1e-9 * std::abs(w2.f(0))) << q;
+    w3.wf_cubic(r * r, a, b);
+    EXPECT_NEAR(a, w3.w(r), 1e-12 * w3.w(0)) << q;
+    EXPECT_NEAR(b, w3.f(r), 1e-9 * std::abs(w3.f(0))) << q;
+  }
+}
