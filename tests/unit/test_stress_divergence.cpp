@@ -135,3 +135,60 @@ TEST(StressDivergence, CorrectedFormIsTheAdjointOfTheVelocityGradient) {
     }
   }
 }
+
+TEST(StressDivergence, UniformStressGivesNoForceInTheInterior) {
+  // A uniform anisotropic stress (pressure and deviatoric part) on a regular lattice: both forms
+  // give zero acceleration away from the free surfaces (MMB Eq. 11; corrected form).
+  for (const char* form : {"normalised", "corrected"}) {
+    std::string text = fmt::format(R"(
+name: uniform
+dimension: 2
+dp: 0.01
+domain: {{min: [-1, -1], max: [1, 1]}}
+materials:
+  steel: {{density: 7800, bulk_modulus: 160e9, shear_modulus: 80e9}}
+bodies:
+  - name: block
+    phase: solid
+    material: steel
+    shape: {{box: {{min: [0, 0], max: [0.3, 0.3]}}}}
+    stress_divergence: {0}
+end_time: 1
+)",
+                                   form);
+    Simulation<2> sim(load_scene_text(text));
+    auto e = std::make_unique<SphEquations<2>>(sim, true);
+    SphEquations<2>* eq = e.get();
+    sim.add_module(std::move(e));
+    auto sm = std::make_unique<SolidModule<2>>(sim);
+    SolidModule<2>* solid = sm.get();
+    sim.add_module(std::move(sm));
+    sim.create_particles();
+    sim.init();
+    auto& p = sim.particles();
+    auto S = p.view<Mat3>("deviatoric_stress");
+    Mat3 s;
+    s << 3e8, 1e8, 0, 1e8, -1e8, 0, 0, 0, -2e8;
+    for (std::size_t i = 0; i < p.size(); ++i) p.rho()[i] = 7800 * 1.001, S[i] = s;
+    eq->sums(sim);
+    eq->constitutive(sim);
+    for (auto& a : p.a()) a.setZero();
+    eq->forces(sim);
+    solid->forces(sim);
+    const double h = sim.kernel().h(), scale = 3e8 / (7800 * h);
+    int interior = 0;
+    double amax = 0, asurf = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const auto& x = p.x()[i];
+      if (x.minCoeff() < 3 * h || x.maxCoeff() > 0.3 - 3 * h) {
+        asurf = std::max(asurf, p.a()[i].norm());
+        continue;
+      }
+      ++interior;
+      amax = std::max(amax, p.a()[i].norm());
+    }
+    EXPECT_GT(interior, 100);
+    EXPECT_LT(amax, 1e-10 * scale) << form;
+    EXPECT_GT(asurf, 1e-3 * scale) << form;  // the free surface is not in equilibrium
+  }
+}
