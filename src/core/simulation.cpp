@@ -240,6 +240,8 @@ template <int D>
 void Simulation<D>::update_pair_cache() {
   auto x = p_.x();
   auto bd = p_.body();
+  auto m = p_.m();
+  auto rho = p_.rho();
   const std::size_t n = p_.size();
   const double rs2 = kernel_.radius() * kernel_.radius();
   const Kernel<D> W = kernel_;  // a local copy: the stores below cannot alias its parameters
@@ -251,12 +253,14 @@ void Simulation<D>::update_pair_cache() {
   pl.w.resize(nb_.pairs());
   pl.f.resize(nb_.pairs());
   group_.resize(n);
+  vol_.resize(n);
   rmin_.resize(n);
   jmin_.resize(n);
   const bool cubic = W.type() == KernelType::CubicSpline;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;
+    vol_[i] = m[i] / rho[i];
     double best = std::numeric_limits<double>::infinity();
     int jb = -1;
     std::size_t q = nb_.begin(i);

@@ -75,8 +75,8 @@ class Simulation {
   // One kick-drift-kick step, shortened so as not to pass `stop`. Throws RunAborted (with a
   // diagnosis) if a guard trips.
   void advance(double stop = std::numeric_limits<double>::infinity());
-  // Recomputes the pair list (PairList) at the current positions: needed after moving particles
-  // by hand (tests); a step does it itself.
+  // Recomputes the pair list (PairList) and the volumes at the current state: needed after moving
+  // particles or changing densities by hand (tests); a step does it itself.
   void update_pair_cache();
   // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
   void rebuild_neighbours();
@@ -104,6 +104,8 @@ class Simulation {
   double min_distance() const { return min_r_; }
   // Pairs within the support at the current positions (see PairList).
   const PairList<D>& pairs() const { return pairs_; }
+  // Particle volumes V = m/rho, computed with the pair list (valid until the next drift).
+  const std::vector<double>& volumes() const { return vol_; }
   // Interaction group of each particle: -1 for fluid (one continuum); for solids, the body or
   // the continuum several bodies share.
   const std::vector<int>& group() const { return group_; }
@@ -136,7 +138,7 @@ class Simulation {
   long step_ = 0;
   double min_r_ = 0;
   PairList<D> pairs_;
-  std::vector<double> rmin_;
+  std::vector<double> rmin_, vol_;
   std::vector<double> wave_speed_;  // per material, sqrt((K + 4 mu/3)/rho0)
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;

@@ -42,28 +42,23 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
   const auto& pw = pl.w;
   const auto& pf = pl.f;
   const auto& grp = sim.group();
-  auto x = p.x();
-  auto m = p.m();
-  auto rho = p.rho();
+  const auto& vol = sim.volumes();
   auto shep = p.template view<double>(kshep_);
   auto corr = p.template view<Mat<D>>(kcorr_);
   const double w0 = sim.kernel().w(0.0);
   const std::size_t n = p.size();
-  vol_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) vol_[i] = m[i] / rho[i];
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const int gi = grp[i];
-    double s = vol_[i] * w0;
+    double s = vol[i] * w0;
     Mat<D> b = Mat<D>::Zero();
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
       const Vec<D>& r = pl.r[k];
-      s += vol_[j] * pw[k];
+      s += vol[j] * pw[k];
       // (x_j - x_i) (x) grad_i W_ij = (-r) (x) (F r)   (MMB Eq. 9)
-      b.noalias() -= (vol_[j] * pf[k]) * (r * r.transpose());
+      b.noalias() -= (vol[j] * pf[k]) * (r * r.transpose());
     }
     shep[i] = s;  // Shepard sum, denominator of the normalised gradient (MMB Eq. 10)
     corr[i] = invert_correction<D>(b);
@@ -76,9 +71,8 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   const auto& pl = sim.pairs();
   const auto& pf = pl.f;
   const auto& grp = sim.group();
-  auto x = p.x();
+  const auto& vol = sim.volumes();
   auto v = p.v();
-  auto m = p.m();
   auto rho = p.rho();
   auto drho = p.drho();
   auto corr = p.template view<Mat<D>>(kcorr_);
@@ -105,7 +99,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
       const Vec<D>& r = pl.r[k];
-      const double vj = m[j] / rho[j];
+      const double vj = vol[j];
       g.noalias() +=
           (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
       if (any_diffusion_) {
@@ -144,7 +138,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   const auto& pw = pl.w;
   const auto& pf = pl.f;
   const auto& grp = sim.group();
-  auto x = p.x();
+  const auto& vol = sim.volumes();
   auto v = p.v();
   auto a = p.a();
   auto m = p.m();
@@ -184,7 +178,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
     if (kstress_ >= 0) s += dev[i].template topLeftCorner<D, D>();  // MMB Eq. 12
     if (bodies[bd[i]].corrected_divergence) {
       sig_[i] = s * corr[i];
-      wpair_[i] = m[i] / rho[i];
+      wpair_[i] = vol[i];
     } else {
       sig_[i] = s / (rho[i] * rho[i] * shep[i]);
       wpair_[i] = m[i];

@@ -22,8 +22,8 @@ class SphEquations : public Module<D> {
  private:
   int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1, kas_ = -1;
   bool any_av_ = false, any_diffusion_ = false;
-  // Per-particle scratch of the pair passes (volume, stress factor, AV and diffusion parameters).
-  std::vector<double> vol_, wpair_, cs_, alpha_, beta_, delta_, phimax_;
+  // Per-particle scratch of the pair passes (stress factor, AV and diffusion parameters).
+  std::vector<double> wpair_, cs_, alpha_, beta_, delta_, phimax_;
   std::vector<Mat<D>> sig_;
 };
 

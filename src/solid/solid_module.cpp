@@ -283,10 +283,8 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   const double h = sim.kernel().h(), eta2 = 0.01 * h * h;
   const std::size_t n = p.size();
   const bool wrap = std::any_of(periodic_.begin(), periodic_.end(), [](bool b) { return b; });
-  vol_.resize(n);
+  const auto& vol = sim.volumes();
   omega2_.assign(n, 0.0);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) vol_[i] = m[i] / rho[i];
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
@@ -295,7 +293,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const double E =
         9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
     const double cs = mat.sound_speed();
-    const double vi = vol_[i];
+    const double vi = vol[i];
     const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
     const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi * E;
     const double kvisc = -b.hg_zeta * b.hg_chi * m[i] * cs * h;
@@ -321,7 +319,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       const double r2 = d.squaredNorm();
       const double ed = eps.dot(d);  // (eps . x_ij), |x_ij| times the projection
       // MMB Eq. 32: stiffness-based force along the current pair direction (1 - chi: Eq. 34).
-      const double kij = vol_[j] * w / X2;
+      const double kij = vol[j] * w / X2;
       kappa += kij;
       f += (kstiff * kij * ed / r2) * d;
       // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).

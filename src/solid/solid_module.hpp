@@ -43,7 +43,6 @@ class SolidModule : public Module<D> {
   std::vector<std::size_t> rstart_;
   std::vector<int> rj_;
   std::vector<Vec<D>> rshift_, rg_;
-  std::vector<double> vol_;     // scratch: particle volumes m/rho
   std::vector<double> omega2_;  // hourglass spring frequency bound per particle (last forces)
   Vec<D> box_;
   std::array<bool, D> periodic_{};

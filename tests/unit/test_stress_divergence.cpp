@@ -67,6 +67,7 @@ struct Block {
       s = 0.5 * (s + s.transpose()).eval();
       S[i] = s - s.trace() / 3 * Mat3::Identity();
     }
+    sim->update_pair_cache();  // volumes of the new densities
     eq->sums(*sim);
     eq->rates(*sim);
     eq->constitutive(*sim);
@@ -156,6 +157,7 @@ TEST(StressDivergence, UniformStressGivesNoForceInTheInterior) {
     Mat3 s;
     s << 3e8, 1e8, 0, 1e8, -1e8, 0, 0, 0, -2e8;
     for (std::size_t i = 0; i < p.size(); ++i) p.rho()[i] = 7800 * 1.001, S[i] = s;
+    sim.update_pair_cache();  // volumes of the new densities
     eq->sums(sim);
     eq->constitutive(sim);
     for (auto& a : p.a()) a.setZero();
