@@ -13,27 +13,8 @@ namespace {
 
 template <int D>
 Scene solid_scene(double jitter) {
-  std::string text = fmt::format(R"(
-name: hg
-dimension: {0}
-dp: 0.01
-domain: {{min: {1}, max: {2}}}
-materials:
-  steel: {{density: 7800, bulk_modulus: 160e9, shear_modulus: 80e9}}
-bodies:
-  - name: block
-    phase: solid
-    material: steel
-    shape: {{box: {{min: {3}, max: {4}}}}}
-    jitter: {5}
-    seed: 5
-    hourglass: {{xi: 1.0, zeta: 10, chi: 0.5}}
-end_time: 1
-)",
-                                 D, D == 2 ? "[-1, -1]" : "[-1, -1, -1]",
-                                 D == 2 ? "[1, 1]" : "[1, 1, 1]", D == 2 ? "[0, 0]" : "[0, 0, 0]",
-                                 D == 2 ? "[0.16, 0.12]" : "[0.1, 0.08, 0.07]", jitter);
-  return load_scene_text(text);
+  return test::solid_block_scene(D, D == 2 ? "[0.16, 0.12]" : "[0.1, 0.08, 0.07]", jitter, 5,
+                                 "hourglass: {xi: 1.0, zeta: 10, chi: 0.5}");
 }
 
 template <int D>

@@ -14,29 +14,9 @@ namespace {
 
 template <int D>
 Scene block_scene(const std::string& form, double jitter = 0.3, double scale = 1.0) {
-  std::string text = fmt::format(
-      R"(
-name: div
-dimension: {0}
-dp: 0.01
-domain: {{min: {1}, max: {2}}}
-materials:
-  steel: {{density: 7800, bulk_modulus: 160e9, shear_modulus: 80e9}}
-bodies:
-  - name: block
-    phase: solid
-    material: steel
-    shape: {{box: {{min: {3}, max: {4}}}}}
-    jitter: {6}
-    seed: 7
-    stress_divergence: {5}
-end_time: 1
-)",
-      D, D == 2 ? "[-1, -1]" : "[-1, -1, -1]", D == 2 ? "[1, 1]" : "[1, 1, 1]",
-      D == 2 ? "[0, 0]" : "[0, 0, 0]",
-      D == 2 ? fmt::format("[{}, {}]", 0.16 * scale, 0.12 * scale) : "[0.1, 0.08, 0.07]", form,
-      jitter);
-  return load_scene_text(text);
+  const std::string max = D == 2 ? fmt::format("[{}, {}]", 0.16 * scale, 0.12 * scale)
+                                 : std::string("[0.1, 0.08, 0.07]");
+  return test::solid_block_scene(D, max, jitter, 7, "stress_divergence: " + form);
 }
 
 // A free jittered block with random densities, velocities and deviatoric stresses; returns the
