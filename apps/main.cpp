@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench.hpp"
+#include "core/threads.hpp"
 #include "core/types.hpp"
 #include "info.hpp"
 #include "runner.hpp"
@@ -19,7 +20,9 @@ int main(int argc, char** argv) {
   cmd_run->add_option("--set", run.overrides, "override a scene key, e.g. --set end_time=0.1")
       ->take_all();
   cmd_run->add_option("--out", run.out, "output folder (default out/<scene name>)");
-  cmd_run->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
+  cmd_run
+      ->add_option("--threads", run.threads,
+                   "OpenMP threads (default: OMP_NUM_THREADS, else the usable cores)")
       ->check(CLI::PositiveNumber);
   cmd_run->add_option("--restart", run.restart, "continue from a checkpoint file (.h5)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress line");
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
   cmd_bench->add_option("--scene", bench.scene, "bench this scene instead of the acoustic wave");
   cmd_bench->add_option("--refine", bench.refine, "with --scene: run at dp divided by each factor");
 
+  set_default_threads();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -11,7 +11,7 @@ struct RunOptions {
   std::vector<std::string> overrides;
   std::string out;
   std::string restart;
-  int threads = 0;  // 0: OpenMP default
+  int threads = 0;  // 0: keep the current default (set_default_threads)
   bool quiet = false;
   long max_steps = 0;  // stop after this many steps (bench); 0: no limit
   bool write_output = true;

@@ -78,6 +78,7 @@ TEST(SphEquations, UniformPressureGivesNoForceInTheInterior) {
 
 TEST(SphEquations, ResultsDoNotDependOnThreadCount) {
   Scene s = test::box_scene(2, 0.01, 0.3, 0.2, 0, "x, y", 0.25, kAV);
+  const int before = omp_get_max_threads();
   auto run = [&](int threads) {
     omp_set_num_threads(threads);
     auto sim = make<2>(s, 1.0, 9);
@@ -86,7 +87,7 @@ TEST(SphEquations, ResultsDoNotDependOnThreadCount) {
   };
   auto a = run(1);
   auto b = run(2);
-  omp_set_num_threads(omp_get_num_procs());
+  omp_set_num_threads(before);
   auto& pa = a->particles();
   auto& pb = b->particles();
   ASSERT_EQ(pa.size(), pb.size());

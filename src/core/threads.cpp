@@ -1,0 +1,45 @@
+#include "core/threads.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace monosph {
+namespace {
+
+// CPU quota in CPUs from cgroup v2 (cpu.max: "quota period" or "max period") or v1
+// (cpu.cfs_quota_us / cpu.cfs_period_us); 0 when there is none.
+double cgroup_quota() {
+  std::ifstream v2("/sys/fs/cgroup/cpu.max");
+  std::string quota;
+  double period = 0;
+  if (v2 >> quota >> period && quota != "max" && period > 0) return std::stod(quota) / period;
+  std::ifstream q("/sys/fs/cgroup/cpu/cpu.cfs_quota_us"), p("/sys/fs/cgroup/cpu/cpu.cfs_period_us");
+  double qv = -1, pv = 0;
+  if (q >> qv && p >> pv && qv > 0 && pv > 0) return qv / pv;
+  return 0;
+}
+
+}  // namespace
+
+int usable_cpus() {
+  int n = omp_get_num_procs();
+  try {
+    const double quota = cgroup_quota();
+    if (quota > 0) n = std::min(n, std::max(1, static_cast<int>(std::ceil(quota - 1e-9))));
+  } catch (...) {  // unreadable quota: keep the affinity count
+  }
+  return std::max(1, n);
+}
+
+void set_default_threads() {
+  const char* env = std::getenv("OMP_NUM_THREADS");
+  if (env && *env) return;
+  omp_set_num_threads(usable_cpus());
+}
+
+}  // namespace monosph
