@@ -15,6 +15,7 @@ struct Probes<D>::Item {
   int field = -1, body = -1, bc = -1;
   std::int64_t id = -1;  // tracked particle
   Expression weight;
+  Module<D>* module = nullptr;  // provides the values of a module's probe type
 };
 
 template <int D>
@@ -39,6 +40,19 @@ Probes<D>::Probes(Simulation<D>& sim) {
         throw InputError(where + ".field: '" + s.field + "' has " + std::to_string(nc) +
                          " components; name one, e.g. " + s.field + ".x");
     }
+    for (const auto& m : sim.modules()) {  // a probe type of a physics module
+      auto suffixes = m->probe_columns(s);
+      if (suffixes.empty()) continue;
+      it->module = m.get();
+      for (const auto& c : suffixes) columns_.push_back(s.name + c);
+      break;
+    }
+    if (it->module) {
+      items_.push_back(std::move(it));
+      continue;
+    }
+    if (s.type.rfind("surface_", 0) == 0)
+      throw InputError(where + ".type: '" + s.type + "' needs the rigid module (a surfaces section)");
     if (s.type == "reaction_force") {
       for (std::size_t b = 0; b < sim.boundaries().size(); ++b)
         if (sim.boundaries()[b].name == s.body) it->bc = static_cast<int>(b);
@@ -85,6 +99,10 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
   std::vector<double> out;
   for (auto& it : items_) {
     const auto& s = it->spec;
+    if (it->module) {
+      it->module->probe(sim, s, out);
+      continue;
+    }
     auto in_body = [&](std::size_t i) { return it->body < 0 || bd[i] == it->body; };
     auto value = [&](std::size_t i) {
       const Field& f = p.field(it->field);
@@ -174,6 +192,12 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       for (std::size_t i = 0; i < n; ++i)
         if (ids[i] == it->id) val = value(i);
       out.push_back(val);
+    } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
+      double sum = 0;
+      const auto& rm = sim.removed_mass();
+      for (std::size_t b = 0; b < rm.size(); ++b)
+        if (it->body < 0 || static_cast<int>(b) == it->body) sum += rm[b];
+      out.push_back(sum);
     } else if (s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) out.push_back(sim.reactions()[it->bc][a]);
     }

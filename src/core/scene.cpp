@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -14,6 +15,29 @@ namespace monosph {
 double Material::sound_speed() const {
   return std::sqrt(bulk_modulus / density);
 }
+std::optional<Material> library_material(const std::string& name) {
+  // MMB 2020 Table 1 (Al 6061-T6 after [38]; PMMA). Temperatures in K.
+  Material m;
+  m.name = name;
+  if (name == "Al6061-T6") {
+    m.density = 2800, m.bulk_modulus = 69e9, m.shear_modulus = 26.5e9, m.heat_capacity = 885;
+    m.plasticity = {true, 164e6, 211e6, 0.465, 0.002, 1.0, 1.419, 292, 925};
+    m.damage = {true, -0.77, 1.45, -0.47, 0.0, 1.6};
+    return m;
+  }
+  if (name == "PMMA") {
+    m.density = 1186, m.bulk_modulus = 5.85e9, m.shear_modulus = 2.2e9, m.heat_capacity = 1470;
+    m.plasticity = {true, 212e6, 580e6, 3.5, 0.081, 0.001, 0.749, 213, 398};
+    m.damage = {true, -1.751, 2.32, -0.773, -0.0491, 0.38};
+    return m;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> library_material_names() {
+  return {"Al6061-T6", "PMMA"};
+}
+
 double Material::wave_speed() const {
   return std::sqrt((bulk_modulus + 4.0 * shear_modulus / 3.0) / density);
 }
@@ -26,7 +50,7 @@ int Scene::material_index(const std::string& n) const {
 
 namespace {
 
-const std::vector<std::string> kModules = {"solid"};  // physics modules available to scenes
+const std::vector<std::string> kModules = {"solid", "rigid"};  // physics modules for scenes
 
 void check_expression(const std::string& text, const std::string& path) {
   Expression e(text, path);
@@ -148,6 +172,114 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
   return s;
 }
 
+// A rigid surface (MMB Sect. 3; built by src/rigid): one geometry key, motion, contact parameters.
+// `folder` resolves a relative STL path (the scene file's folder; empty: the working directory).
+SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim,
+                         const std::filesystem::path& folder) {
+  MapReader r(node, index_path);
+  SurfaceSpec s;
+  s.name = r.text("name");
+  const std::string p = index_path + " (" + s.name + ")";
+  MapReader q(node, p);  // the same map, with the name in the paths of its keys
+  q.text("name");
+  s.friction = q.non_negative("friction", 0.0);
+  s.stiffness = q.positive("stiffness", 0.0);
+  s.poisson_ratio = q.non_negative("poisson_ratio", 0.3);
+  if (s.poisson_ratio >= 0.5) scene_error(q.at("poisson_ratio"), "must be below 0.5");
+  if (q.has("poisson_ratio") && !q.has("stiffness"))
+    scene_error(q.at("poisson_ratio"), "needs a stiffness (a rigid surface has no Poisson ratio)");
+  s.scale = q.positive("scale", 1.0);
+  s.translate = q.has("translate") ? q.vector("translate", dim)
+                                   : (q.optional("translate"), Point(dim, 0.0));
+  if (q.has("velocity"))
+    s.velocity_expr = expressions(q, "velocity", dim);
+  else
+    s.velocity_expr.assign(dim, "0"), q.optional("velocity");
+  const std::vector<std::string> kinds2 = {"box", "plane", "segment", "polyline", "polygon"};
+  const std::vector<std::string> kinds3 = {"box", "plane", "rectangle", "triangles", "stl"};
+  const auto& kinds = dim == 2 ? kinds2 : kinds3;
+  std::vector<std::string> given;
+  for (const auto& k : kinds)
+    if (q.has(k)) given.push_back(k);
+  const std::string allowed = dim == 2 ? "box, plane, segment, polyline, polygon"
+                                       : "box, plane, rectangle, triangles, stl";
+  if (given.size() != 1) {
+    if (given.empty()) q.finish();  // a misspelt geometry key is named there
+    scene_error(p, "give exactly one geometry key (" + std::to_string(dim) + "D: " + allowed + ")");
+  }
+  s.kind = given[0];
+  const std::string g = q.at(s.kind);
+  auto points = [&](std::size_t min_count) {
+    auto v = q.node(s.kind);
+    if (!v.IsSequence() || v.size() < min_count)
+      scene_error(g, "expected a list of at least " + std::to_string(min_count) + " points");
+    for (std::size_t i = 0; i < v.size(); ++i)
+      s.points.push_back(as_vector(v[i], g + "[" + std::to_string(i) + "]", dim));
+  };
+  auto distinct = [&](std::size_t i, std::size_t j) {
+    double d2 = 0;
+    for (int a = 0; a < dim; ++a) d2 += std::pow(s.points[i][a] - s.points[j][a], 2);
+    if (!(d2 > 0))
+      scene_error(g, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide");
+  };
+  if (s.kind == "box") {
+    MapReader b(q.node("box"), g);
+    s.points = {b.vector("min", dim), b.vector("max", dim)};
+    b.finish();
+    for (int a = 0; a < dim; ++a)
+      if (!(s.points[1][a] > s.points[0][a]))
+        scene_error(g + ".max", "must be greater than min in every axis");
+  } else if (s.kind == "plane") {
+    MapReader b(q.node("plane"), g);
+    s.points = {b.vector("point", dim), b.vector("normal", dim)};
+    double nn = 0;
+    for (double c : s.points[1]) nn += c * c;
+    if (!(nn > 0)) scene_error(g + ".normal", "must not be zero");
+    if (dim == 2) {
+      s.size[0] = b.positive("size");
+    } else {
+      auto sz = b.vector("size", 2);
+      if (!(sz[0] > 0 && sz[1] > 0)) scene_error(g + ".size", "side lengths must be positive");
+      s.size[0] = sz[0], s.size[1] = sz[1];
+    }
+    b.finish();
+  } else if (s.kind == "segment") {
+    points(2);
+    if (s.points.size() != 2) scene_error(g, "expected two points [[x0, y0], [x1, y1]]");
+    distinct(0, 1);
+  } else if (s.kind == "polyline" || s.kind == "polygon") {
+    points(s.kind == "polyline" ? 2 : 3);
+    for (std::size_t i = 0; i + 1 < s.points.size(); ++i) distinct(i, i + 1);
+    if (s.kind == "polygon") distinct(s.points.size() - 1, 0);
+  } else if (s.kind == "rectangle") {
+    points(4);
+    if (s.points.size() != 4) scene_error(g, "expected four corners in order");
+    for (std::size_t i = 0; i < 4; ++i) distinct(i, (i + 1) % 4);
+  } else if (s.kind == "triangles") {
+    auto v = q.node("triangles");
+    if (!v.IsSequence() || v.size() < 1) scene_error(g, "expected a list of triangles");
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::string ti = g + "[" + std::to_string(i) + "]";
+      if (!v[i].IsSequence() || v[i].size() != 3)
+        scene_error(ti, "expected three corners [[x, y, z], [x, y, z], [x, y, z]]");
+      for (std::size_t c = 0; c < 3; ++c)
+        s.points.push_back(as_vector(v[i][c], ti + "[" + std::to_string(c) + "]", 3));
+    }
+  } else {  // stl
+    std::filesystem::path f = q.text("stl");
+    if (f.is_relative()) f = folder / f;
+    std::error_code ec;
+    f = std::filesystem::absolute(f, ec).lexically_normal();
+    std::ifstream in(f, std::ios::binary);
+    if (!in || std::filesystem::is_directory(f, ec))
+      scene_error(g, "cannot read STL file '" + f.string() + "'");
+    s.file = f.string();
+    node["stl"] = s.file;  // absolute in the stored scene text, so that a restart finds it
+  }
+  q.finish();
+  return s;
+}
+
 YAML::Node parse_yaml(const std::string& text, const std::string& origin) {
   try {
     return YAML::Load(text);
@@ -204,8 +336,18 @@ void apply_override(YAML::Node& root, const std::string& item) {
 Material read_material(const std::string& name, const YAML::Node& n, const std::string& path) {
   MapReader r(n, path);
   Material m;
+  if (r.has("preset")) {
+    const std::string preset = r.text("preset");
+    auto lib = library_material(preset);
+    if (!lib) {
+      std::string names;
+      for (const auto& k : library_material_names()) names += (names.empty() ? "" : ", ") + k;
+      scene_error(r.at("preset"), "no shipped material '" + preset + "' (available: " + names + ")");
+    }
+    m = *lib;
+  }
   m.name = name;
-  m.density = r.positive("density");
+  m.density = m.density > 0 ? r.positive("density", m.density) : r.positive("density");
   if (r.has("bulk_modulus") && r.has("sound_speed"))
     scene_error(path, "give either bulk_modulus or sound_speed, not both");
   if (r.has("sound_speed")) {
@@ -213,10 +355,52 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     m.bulk_modulus = m.density * c * c;
     r.optional("bulk_modulus");
   } else {
-    m.bulk_modulus = r.positive("bulk_modulus");
+    m.bulk_modulus =
+        m.bulk_modulus > 0 ? r.positive("bulk_modulus", m.bulk_modulus) : r.positive("bulk_modulus");
     r.optional("sound_speed");
   }
-  m.shear_modulus = r.non_negative("shear_modulus", 0.0);
+  m.shear_modulus = r.non_negative("shear_modulus", m.shear_modulus);
+  m.heat_capacity = r.non_negative("heat_capacity", m.heat_capacity);
+  m.taylor_quinney = r.non_negative("taylor_quinney", m.taylor_quinney);
+  if (m.taylor_quinney > 1) scene_error(r.at("taylor_quinney"), "must lie in [0, 1]");
+  if (r.has("plasticity")) {
+    // MMB Eq. 23 (Johnson & Cook 1983); perfect plasticity is B = 0.
+    MapReader q(r.node("plasticity"), r.at("plasticity"));
+    q.choice("type", {"johnson_cook"}, "johnson_cook");
+    JohnsonCook& jc = m.plasticity;
+    jc.on = true;
+    jc.A = jc.A > 0 ? q.positive("A", jc.A) : q.positive("A");
+    jc.B = q.non_negative("B", jc.B);
+    jc.n = q.positive("n", jc.n);
+    jc.C = q.non_negative("C", jc.C);
+    jc.rate0 = q.positive("reference_strain_rate", jc.rate0);
+    jc.m = q.positive("m", jc.m);
+    jc.T_ref = q.positive("reference_temperature", jc.T_ref);
+    jc.T_melt = q.non_negative("melting_temperature", jc.T_melt);
+    if (jc.T_melt > 0 && jc.T_melt <= jc.T_ref)
+      scene_error(q.at("melting_temperature"), "must exceed reference_temperature (or be 0: no thermal softening)");
+    q.finish();
+  } else {
+    r.optional("plasticity");
+  }
+  if (r.has("damage")) {
+    MapReader q(r.node("damage"), r.at("damage"));
+    q.choice("type", {"johnson_cook"}, "johnson_cook");
+    JohnsonCookDamage& d = m.damage;
+    d.on = true;
+    d.d1 = q.number("D1", d.d1);
+    d.d2 = q.number("D2", d.d2);
+    d.d3 = q.number("D3", d.d3);
+    d.d4 = q.number("D4", d.d4);
+    d.d5 = q.number("D5", d.d5);
+    q.finish();
+  } else {
+    r.optional("damage");
+  }
+  if (m.damage.on && !m.plasticity.on)
+    scene_error(r.at("damage"), "Johnson-Cook damage grows with plastic strain: give `plasticity` too");
+  if (m.plasticity.on && m.shear_modulus <= 0)
+    scene_error(r.at("plasticity"), "needs a positive shear_modulus");
   r.finish();
   return m;
 }
@@ -303,7 +487,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     for (const auto& m : r.strings("modules")) {
       if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
         scene_error("modules", "unknown module '" + m +
-                                   "' (available: solid; the basic Eulerian SPH "
+                                   "' (available: solid, rigid; the basic Eulerian SPH "
                                    "equations are always on)");
       s.modules.push_back(m);
     }
@@ -341,6 +525,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       if (b.has("initial")) {
         MapReader in(b.node("initial"), p + ".initial");
         body.density_expr = in.text("density", "");
+        body.temperature = in.positive("temperature", 0.0 + body.temperature);
         if (!body.density_expr.empty()) check_expression(body.density_expr, in.at("density"));
         if (in.has("velocity") && in.has("velocity_profile"))
           scene_error(in.path(), "give either velocity or velocity_profile, not both");
@@ -398,9 +583,18 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         const std::string ref =
             hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
         body.hg_reference = ref == "initial" ? 0 : ref == "intermediate" ? 1 : 2;
+        // Ganzenmueller 2015 (Sect. 3): E of Eq. 32 replaced by the yield stress once plastic.
+        body.hg_plastic_switch = hg.boolean("plastic_switch", false);
         hg.finish();
       } else {
         b.optional("hourglass");
+      }
+      if (b.has("erosion")) {
+        if (body.phase != "solid") scene_error(p + ".erosion", "applies to solid bodies only");
+        const std::string e = b.choice("erosion", {"none", "failed", "failed_surface"});
+        body.erosion = e == "none" ? 0 : e == "failed" ? 1 : 2;
+      } else {
+        b.optional("erosion");
       }
       b.finish();
       // The body must lie inside the domain.
@@ -461,6 +655,29 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     r.optional("boundary_conditions");
   }
 
+  if (r.has("surfaces")) {  // rigid surfaces: switch the rigid module on
+    auto list = r.node("surfaces");
+    if (!list.IsSequence() || list.size() == 0) scene_error("surfaces", "expected a list");
+    std::error_code ec;
+    const std::filesystem::path folder =
+        std::filesystem::is_regular_file(origin, ec) ? std::filesystem::path(origin).parent_path()
+                                                     : std::filesystem::path();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string p = "surfaces[" + std::to_string(i) + "]";
+      s.surfaces.push_back(read_surface(list[i], p, dim, folder));
+      for (std::size_t j = 0; j < i; ++j)
+        if (s.surfaces[j].name == s.surfaces[i].name)
+          scene_error(p + " (" + s.surfaces[i].name + ").name", "duplicate surface name");
+    }
+    YAML::Emitter out;  // STL paths were made absolute
+    out << root;
+    s.yaml = out.c_str();
+    if (std::find(s.modules.begin(), s.modules.end(), "rigid") == s.modules.end())
+      s.modules.push_back("rigid");
+  } else {
+    r.optional("surfaces");
+  }
+
   s.body_force = r.has("body_force") ? r.vector("body_force", dim)
                                      : (r.optional("body_force"), Point(dim, 0.0));
   s.end_time = r.positive("end_time");
@@ -472,6 +689,9 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     s.force_factor = t.positive("force_factor", 0.25);
     s.max_dt = t.non_negative("max", 0.0);
     s.dt_collapse = t.positive("collapse_ratio", 1e-4);
+    s.newmark_gamma = t.number("newmark_gamma", 0.5);
+    if (s.newmark_gamma < 0.5 || s.newmark_gamma > 1.0)
+      scene_error("time_step.newmark_gamma", "must lie in [0.5, 1] (0.5: velocity Verlet)");
     t.finish();
   } else {
     r.optional("time_step");
@@ -507,7 +727,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     static const std::vector<std::string> types = {
         "kinetic_energy", "elastic_energy", "disorder",      "total_mass", "momentum",
         "abs_momentum",   "max_speed",      "min_distance",  "integral",   "mean",
-        "value_at",       "tracked",        "reaction_force"};
+        "value_at",       "tracked",        "reaction_force", "surface_force", "surface_contacts",
+        "removed_mass"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -530,12 +751,27 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       }
       ps.weight_expr = q.text("weight", "");
       if (!ps.weight_expr.empty()) check_expression(ps.weight_expr, q.at("weight"));
-      ps.body = q.text("body", "");
+      const bool on_surface = ps.type == "surface_force" || ps.type == "surface_contacts";
+      if (on_surface && q.has("surface")) {  // the surface's name (`body` is accepted too)
+        if (q.has("body")) scene_error(p, "give either surface or body, not both");
+        ps.body = q.text("surface");
+      }
+      if (ps.body.empty()) ps.body = q.text("body", "");
       if (ps.type == "value_at" || ps.type == "tracked")
         ps.point = q.vector("point", dim);
       else
         q.optional("point");
-      if (ps.type == "reaction_force") {
+      if (on_surface) {
+        bool found = false;
+        std::vector<std::string> names;
+        for (const auto& sf : s.surfaces) found = found || sf.name == ps.body, names.push_back(sf.name);
+        if (ps.body.empty()) scene_error(p + ".surface", "missing (the name of a surface)");
+        if (!found) {
+          std::string hint = closest_word(ps.body, names);
+          scene_error(p + ".surface", "no surface named '" + ps.body + "' in surfaces" +
+                                          (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+        }
+      } else if (ps.type == "reaction_force") {
         bool found = false;
         for (const auto& bc : s.boundaries) found = found || bc.name == ps.body;
         if (!found)

@@ -27,14 +27,35 @@ struct Shape {
   void bounds(Point& lo, Point& hi) const;  // axis-aligned bounding box
 };
 
+// Johnson-Cook yield stress (MMB Eq. 23): [A + B eps^n][1 + C ln(rate/rate0)][1 - T*^m].
+struct JohnsonCook {
+  bool on = false;
+  double A = 0, B = 0, n = 1, C = 0, rate0 = 1, m = 1, T_ref = 293.15, T_melt = 0;
+};
+
+// Johnson-Cook failure strain (MMB Eq. 26), damage rate = plastic strain rate / eps_f (Eq. 25).
+struct JohnsonCookDamage {
+  bool on = false;
+  double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;
+};
+
 struct Material {
   std::string name;
   double density = 0;          // rho0
   double bulk_modulus = 0;     // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
   double shear_modulus = 0;    // mu
+  JohnsonCook plasticity;      // J2 plasticity (MMB Eq. 22-23) when `on`
+  JohnsonCookDamage damage;    // Johnson-Cook damage (MMB Eq. 25-26) when `on`
+  double heat_capacity = 0;    // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
+  double taylor_quinney = 0.9; // eta of MMB Eq. 24
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
+  double youngs_modulus() const { return 9 * bulk_modulus * shear_modulus / (3 * bulk_modulus + shear_modulus); }
 };
+
+// Named materials shipped with the code (MMB Table 1): "Al6061-T6", "PMMA". Empty if unknown.
+std::optional<Material> library_material(const std::string& name);
+std::vector<std::string> library_material_names();
 
 struct BodySpec {
   std::string name;
@@ -54,6 +75,9 @@ struct BodySpec {
   // Stress divergence: false = normalised gradient (MMB Eq. 10-11); true = corrected gradient,
   // the adjoint of the corrected velocity gradient (Bonet & Lok 1999; docs/theory.md).
   bool corrected_divergence = false;
+  bool hg_plastic_switch = false;  // Ganzenmueller: E -> yield stress in Eq. 32 when plastic
+  double temperature = 0;          // initial temperature, K (0: the material's T_ref)
+  int erosion = 0;                 // remove particles with D >= 1: 0 never, 1 all, 2 surface only
 };
 
 struct BoundarySpec {
@@ -62,6 +86,23 @@ struct BoundarySpec {
   std::optional<Shape> region;             // particles inside a region
   std::vector<std::string> velocity_expr;  // in x, y, z, t
   std::string name;                        // probe name for the reaction force
+};
+
+// A rigid surface with prescribed motion (src/rigid; MMB 2020 Sect. 3): segments in 2D, triangles
+// in 3D. Geometry is built by the rigid module; the scene only checks the keys and values.
+struct SurfaceSpec {
+  std::string name;
+  std::string kind;           // box | plane | segment | polyline | polygon | rectangle | triangles | stl
+  std::vector<Point> points;  // box: min, max; plane: point, normal; segment, polyline, polygon,
+                              // rectangle: vertices; triangles: three corners per triangle
+  double size[2] = {0, 0};    // plane: side lengths (one in 2D, two in 3D)
+  std::string file;           // stl: path (relative to the scene file's folder)
+  double scale = 1;           // every vertex x -> scale x + translate
+  Point translate;
+  std::vector<std::string> velocity_expr;  // prescribed velocity, expressions in t
+  double friction = 0;                     // Coulomb coefficient mu_f
+  double stiffness = 0;                    // Young's modulus E_s; 0: rigid (E_s = infinity)
+  double poisson_ratio = 0.3;              // nu_s (only with a stiffness)
 };
 
 struct ProbeSpec {
@@ -88,10 +129,14 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<BodySpec> bodies;
   std::vector<BoundarySpec> boundaries;
+  std::vector<SurfaceSpec> surfaces;  // rigid surfaces (section `surfaces`)
   std::vector<std::string> modules;
   Point body_force;
   double end_time = 0;
   double cfl = 0.3, force_factor = 0.25, max_dt = 0, dt_collapse = 1e-4;
+  // Explicit Newmark (beta = 0): v_{n+1} = v_n + dt((1 - gamma) a_n + gamma a_{n+1}). 0.5 is velocity
+  // Verlet (no numerical dissipation); gamma > 0.5 damps modes near the step frequency.
+  double newmark_gamma = 0.5;
   double max_mach = 0.5, min_distance = 0.1;
   double output_every = 0, checkpoint_every = 0, probe_every = 0;
   std::vector<std::string> output_fields;

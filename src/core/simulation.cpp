@@ -31,10 +31,21 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
       g = static_cast<int>(it - continua.begin());
       if (it == continua.end()) continua.push_back(b.continuum);
     }
-    bodies_.push_back({b.name, b.phase == "fluid" ? kFluid : kSolid, b.material, b.av_alpha,
-                       b.av_beta, b.as_epsilon, b.as_n, b.delta, b.hg_xi, b.hg_zeta, b.hg_chi,
-                       b.hg_reference, b.corrected_divergence, g});
+    BodyInfo info{b.name,     b.phase == "fluid" ? kFluid : kSolid,
+                  b.material, b.av_alpha,
+                  b.av_beta,  b.as_epsilon,
+                  b.as_n,     b.delta,
+                  b.hg_xi,    b.hg_zeta,
+                  b.hg_chi,   b.hg_reference};
+    info.corrected_divergence = b.corrected_divergence;
+    info.hg_plastic_switch = b.hg_plastic_switch;
+    info.temperature = b.temperature;
+    info.erosion = b.erosion;
+    info.group = g;
+    bodies_.push_back(std::move(info));
   }
+  removed_mass_.assign(bodies_.size(), 0.0);
+  if (scene_.newmark_gamma != 0.5) kaprev_ = p_.add_field("previous_acceleration", D);
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   for (const auto& m : scene_.materials) wave_speed_.push_back(m.wave_speed());
   if (!scene_.boundaries.empty()) {
@@ -173,6 +184,15 @@ void Simulation<D>::update_neighbours() {
   rebuild_requested_ = false;
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
   for (auto& m : modules_) m->before_rebuild(*this);
+  if (!remove_flag_.empty()) {
+    const auto& flag = remove_flag_;
+    auto bd = p_.body();
+    auto mass = p_.m();
+    for (std::size_t i = 0; i < flag.size() && i < p_.size(); ++i)
+      if (flag[i]) removed_mass_[bd[i]] += mass[i];
+    p_.remove(remove_flag_);
+    remove_flag_.clear();
+  }
   long bad = nb_.build(p_, reorder);
   if (bad >= 0) {
     std::ostringstream os;
@@ -180,6 +200,14 @@ void Simulation<D>::update_neighbours() {
     throw RunAborted(os.str());
   }
   for (auto& m : modules_) m->on_rebuild(*this);
+}
+
+template <int D>
+void Simulation<D>::remove_particles(const std::vector<char>& flag) {
+  if (remove_flag_.empty()) remove_flag_.assign(p_.size(), 0);
+  for (std::size_t i = 0; i < flag.size() && i < remove_flag_.size(); ++i)
+    remove_flag_[i] = remove_flag_[i] || flag[i];
+  rebuild_requested_ = true;
 }
 
 template <int D>
@@ -354,6 +382,12 @@ void Simulation<D>::advance(double stop) {
   // Approach `stop` in at most two equal steps so that no sliver of a step is left.
   const double rest = stop - t_;
   const double dt = rest <= dt_ ? rest : rest < 2 * dt_ ? 0.5 * rest : dt_;
+  const double g = scene_.newmark_gamma;
+  if (kaprev_ >= 0) {
+    auto a = p_.a();
+    auto ap = p_.template view<V>(kaprev_);
+    std::copy(a.begin(), a.end(), ap.begin());
+  }
   kick(0.5 * dt, t_ + 0.5 * dt);
   for (auto& m : modules_) m->rates(*this);
   drift(dt);
@@ -361,6 +395,15 @@ void Simulation<D>::advance(double stop) {
   ++step_;
   update_neighbours();
   compute_forces();
+  if (kaprev_ >= 0) {
+    // Newmark gamma: v += dt (gamma - 1/2)(a_{n+1} - a_n) on top of the Verlet half kick.
+    auto v = p_.v();
+    auto a = p_.a();
+    auto ap = p_.template view<V>(kaprev_);
+    const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) v[i] += (g - 0.5) * dt * (a[i] - ap[i]);
+  }
   kick(0.5 * dt, t_);
   check_guards();
   dt_ = compute_dt();

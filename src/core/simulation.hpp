@@ -32,6 +32,10 @@ class Module {
   virtual void diagnostics(Simulation<D>&) {}       // fields for output and probes only
   virtual void on_rebuild(Simulation<D>&) {}        // after a neighbour-list rebuild
   virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
+  // Probe types a module provides (e.g. "surface_force"): the column suffixes of `spec` ("_x",
+  // "_y"... or ""), empty when the type is not this module's; `probe` appends one value per column.
+  virtual std::vector<std::string> probe_columns(const ProbeSpec&) const { return {}; }
+  virtual void probe(Simulation<D>&, const ProbeSpec&, std::vector<double>& out) {}
 };
 
 // Pairs within the kernel support at the current positions, rebuilt with every force evaluation
@@ -58,6 +62,9 @@ struct BodyInfo {
   double hg_xi, hg_zeta, hg_chi;      // hourglass control (MMB Eq. 32-34)
   int hg_reference;                   // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
   bool corrected_divergence = false;  // stress divergence with L_i (Bonet & Lok) or 1/S_i (MMB)
+  bool hg_plastic_switch = false;     // Ganzenmueller 2015: E -> sigma_y in Eq. 32 when plastic
+  double temperature = 0;             // initial temperature (K)
+  int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
   int group = 0;  // interaction group: bodies of one continuum share it (-1: all fluid)
 };
 
@@ -112,6 +119,11 @@ class Simulation {
   // Reaction force of each boundary-condition set (force the constraint applies), last step.
   const std::vector<V>& reactions() const { return reactions_; }
   const std::vector<BoundarySpec>& boundaries() const { return scene_.boundaries; }
+  // Removes the flagged particles at the next neighbour rebuild (forced; modules' before_rebuild
+  // still sees them). Their mass is added to removed_mass() of their body.
+  void remove_particles(const std::vector<char>& flag);
+  const std::vector<double>& removed_mass() const { return removed_mass_; }
+  void set_removed_mass(std::vector<double> m) { removed_mass_ = std::move(m); }
   // "particle id 12 (body 'water') at (x, y)".
   std::string describe(std::size_t i);
 
@@ -132,6 +144,9 @@ class Simulation {
   std::vector<std::unique_ptr<Module<D>>> modules_;
   std::vector<std::vector<Expression>> bc_velocity_;
   std::vector<V> reactions_;
+  int kaprev_ = -1;  // field a_n for the Newmark gamma correction (only when gamma != 0.5)
+  std::vector<char> remove_flag_;     // pending removal (remove_particles)
+  std::vector<double> removed_mass_;  // per body
   int kbc_ = -1;  // field "boundary" (1 + index of the boundary condition, 0 = free)
   V g_;
   double t_ = 0, dt_ = 0, dt0_ = 0;

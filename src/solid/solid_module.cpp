@@ -6,6 +6,7 @@
 
 #include "core/sph_equations.hpp"
 #include "elasticity.hpp"
+#include "plasticity.hpp"
 
 namespace monosph {
 
@@ -32,6 +33,20 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
     any_ls_ = any_ls_ || (b.phase == kSolid && b.hg_reference == 2);
   }
   if (any_ls_) kFls_ = p.add_field("fitted_deformation", D * D);
+  for (const auto& b : sim.bodies()) {
+    if (b.phase != kSolid) continue;
+    const Material& m = sim.materials()[b.material];
+    any_plastic_ = any_plastic_ || m.plasticity.on;
+    any_damage_ = any_damage_ || m.damage.on;
+    any_erosion_ = any_erosion_ || (m.damage.on && b.erosion > 0);
+  }
+  if (any_plastic_) {
+    kep_ = p.add_field("plastic_strain", 1, FieldType::Real, true);
+    kepr_ = p.add_field("plastic_strain_rate", 1, FieldType::Real, true);
+    kT_ = p.add_field("temperature", 1, FieldType::Real, true);
+    ksy_ = p.add_field("yield_stress", 1, FieldType::Real, true);
+  }
+  if (any_damage_) kdmg_ = p.add_field("damage", 1, FieldType::Real, true);
   if (any_as_) kas_ = p.add_field("artificial_stress", D * D);
   const auto& dom = sim.neighbours().domain();
   box_ = dom.length();
@@ -49,6 +64,17 @@ void SolidModule<D>::on_create(Simulation<D>& sim) {
     X0[i] = x[i];
     Fi[i] = Mat<D>::Identity();
     F[i] = Mat<D>::Identity();
+  }
+  if (!any_plastic_) return;
+  auto T = p.template view<double>(kT_);
+  auto sy = p.template view<double>(ksy_);
+  auto bd = p.body();
+  const auto& bodies = sim.bodies();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const BodyInfo& b = bodies[bd[i]];
+    const JohnsonCook& jc = sim.materials()[b.material].plasticity;
+    T[i] = b.temperature > 0 ? b.temperature : jc.on ? jc.T_ref : 293.15;
+    sy[i] = jc.on ? jc_yield(jc, 0, 0, T[i]) : 0;
   }
 }
 
@@ -74,6 +100,73 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   for (std::size_t i = 0; i < n; ++i)
     if (is_solid(ph[i]))
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
+  if (any_plastic_) plastic_return(sim, dt);
+  if (any_erosion_) erode(sim);
+}
+
+template <int D>
+void SolidModule<D>::plastic_return(Simulation<D>& sim, double dt) {
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto mt = p.material();
+  auto rho = p.rho();
+  auto S = p.template view<Mat3>(kS_);
+  auto ep = p.template view<double>(kep_);
+  auto epr = p.template view<double>(kepr_);
+  auto T = p.template view<double>(kT_);
+  auto sy = p.template view<double>(ksy_);
+  std::span<double> dmg;
+  if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
+  const auto& mats = sim.materials();
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i])) continue;
+    const Material& mat = mats[mt[i]];
+    if (!mat.plasticity.on) continue;
+    PlasticPoint pt{ep[i], epr[i], T[i], kdmg_ >= 0 ? dmg[i] : 0.0, sy[i]};
+    plastic_update(S[i], pt, mat, rho[i], dt);
+    ep[i] = pt.eps_p, epr[i] = pt.rate, T[i] = pt.T, sy[i] = pt.sigma_y;
+    if (kdmg_ >= 0) dmg[i] = pt.D;
+  }
+}
+
+template <int D>
+void SolidModule<D>::erode(Simulation<D>& sim) {
+  // Particles with D >= 1 of bodies that ask for erosion are removed; with `failed_surface` only
+  // those on the surface of the intact material: the kernel sum over intact neighbours of the
+  // same continuum, sum_j V_j W_ij (j != i), below 3/4 of its value inside a full lattice
+  // (about 1 - V_i W(0)); a flat surface gives about half of it.
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  auto ph = p.phase();
+  auto bd = p.body();
+  auto dmg = p.template view<double>(kdmg_);
+  const auto& bodies = sim.bodies();
+  const auto& grp = sim.group();
+  const auto& vol = sim.volumes();
+  const double w0 = sim.kernel().w(0.0);
+  const std::size_t n = p.size();
+  if (pl.count.size() != n || grp.size() != n) return;
+  std::vector<char> flag(n, 0);
+  long count = 0;
+#pragma omp parallel for reduction(+ : count) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i]) || dmg[i] < 1) continue;
+    const int mode = bodies[bd[i]].erosion;
+    if (mode == 0) continue;
+    bool remove = mode == 1;
+    if (mode == 2) {
+      double s = 0;
+      for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+        const int j = pl.j[k];
+        if (grp[j] == grp[i] && is_solid(ph[j]) && dmg[j] < 1) s += vol[j] * pl.w[k];
+      }
+      remove = s < 0.75 * (1 - vol[i] * w0);
+    }
+    if (remove) flag[i] = 1, ++count;
+  }
+  if (count > 0) sim.remove_particles(flag);
 }
 
 template <int D>
@@ -284,6 +377,8 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   const std::size_t n = p.size();
   const bool wrap = std::any_of(periodic_.begin(), periodic_.end(), [](bool b) { return b; });
   const auto& vol = sim.volumes();
+  std::span<double> ep, sy;
+  if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
   omega2_.assign(n, 0.0);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -295,7 +390,10 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const double cs = mat.sound_speed();
     const double vi = vol[i];
     const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
-    const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi * E;
+    // Ganzenmueller's switch: a plastically deformed particle uses its yield stress for E.
+    const bool sw = b.hg_plastic_switch && ksy_ >= 0;
+    const double Ei = sw && ep[i] > 0 ? sy[i] : E;
+    const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi;
     const double kvisc = -b.hg_zeta * b.hg_chi * m[i] * cs * h;
     if (!hg) continue;
     // MMB Eq. 31 literally: total F and the initial configuration; or F_ref and the
@@ -305,7 +403,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const auto& F = b.hg_reference == 0 ? Ftot : inter ? Fref : Fls;
     const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
-    double kappa = 0;  // sum_j V_j W_ij / X_ij^2: the pair spring stiffnesses / (V_i xi E)
+    double kappa = 0;  // sum_j V_j W_ij E_ij / X_ij^2: the pair spring stiffnesses / (V_i xi)
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (bd[j] != bd[i]) continue;
@@ -319,7 +417,9 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       const double r2 = d.squaredNorm();
       const double ed = eps.dot(d);  // (eps . x_ij), |x_ij| times the projection
       // MMB Eq. 32: stiffness-based force along the current pair direction (1 - chi: Eq. 34).
-      const double kij = vol[j] * w / X2;
+      // Pair modulus: symmetric so that the pair forces stay equal and opposite.
+      const double Eij = sw ? 0.5 * (Ei + (ep[j] > 0 ? sy[j] : E)) : E;
+      const double kij = vol[j] * w * Eij / X2;
       kappa += kij;
       f += (kstiff * kij * ed / r2) * d;
       // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).
@@ -336,7 +436,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     a[i] += f / m[i];
     // Springs k_ij = xi V_i V_j W_ij E / X_ij^2 on particle i: by Gershgorin the hourglass part of
     // the stiffness matrix has no frequency above omega^2 = 2 sum_j k_ij / m_i.
-    omega2_[i] = 2.0 * b.hg_xi * (1 - b.hg_chi) * E * kappa / rho[i];
+    omega2_[i] = 2.0 * b.hg_xi * (1 - b.hg_chi) * kappa / rho[i];
   }
 }
 

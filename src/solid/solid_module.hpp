@@ -35,6 +35,12 @@ class SolidModule : public Module<D> {
  private:
   Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
 
+  // Plasticity, heating and damage (MMB Sect. 2.2-2.3), only when a solid material has them.
+  void plastic_return(Simulation<D>& sim, double dt);
+  void erode(Simulation<D>& sim);
+  int kep_ = -1, kepr_ = -1, kT_ = -1, kdmg_ = -1, ksy_ = -1;
+  bool any_plastic_ = false, any_damage_ = false, any_erosion_ = false;
+
   int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1;
   bool any_ls_ = false;
   bool any_as_ = false;
