@@ -52,7 +52,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
       continue;
     }
     if (s.type.rfind("surface_", 0) == 0)
-      throw InputError(where + ".type: '" + s.type + "' needs the rigid module (a surfaces section)");
+      throw InputError(where + ".type: '" + s.type +
+                       "' needs the rigid module (a surfaces section)");
     if (s.type == "reaction_force") {
       for (std::size_t b = 0; b < sim.boundaries().size(); ++b)
         if (sim.boundaries()[b].name == s.body) it->bc = static_cast<int>(b);

@@ -189,8 +189,8 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   if (q.has("poisson_ratio") && !q.has("stiffness"))
     scene_error(q.at("poisson_ratio"), "needs a stiffness (a rigid surface has no Poisson ratio)");
   s.scale = q.positive("scale", 1.0);
-  s.translate = q.has("translate") ? q.vector("translate", dim)
-                                   : (q.optional("translate"), Point(dim, 0.0));
+  s.translate =
+      q.has("translate") ? q.vector("translate", dim) : (q.optional("translate"), Point(dim, 0.0));
   if (q.has("velocity"))
     s.velocity_expr = expressions(q, "velocity", dim);
   else
@@ -201,8 +201,8 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   std::vector<std::string> given;
   for (const auto& k : kinds)
     if (q.has(k)) given.push_back(k);
-  const std::string allowed = dim == 2 ? "box, plane, segment, polyline, polygon"
-                                       : "box, plane, rectangle, triangles, stl";
+  const std::string allowed =
+      dim == 2 ? "box, plane, segment, polyline, polygon" : "box, plane, rectangle, triangles, stl";
   if (given.size() != 1) {
     if (given.empty()) q.finish();  // a misspelt geometry key is named there
     scene_error(p, "give exactly one geometry key (" + std::to_string(dim) + "D: " + allowed + ")");
@@ -659,9 +659,9 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     auto list = r.node("surfaces");
     if (!list.IsSequence() || list.size() == 0) scene_error("surfaces", "expected a list");
     std::error_code ec;
-    const std::filesystem::path folder =
-        std::filesystem::is_regular_file(origin, ec) ? std::filesystem::path(origin).parent_path()
-                                                     : std::filesystem::path();
+    const std::filesystem::path folder = std::filesystem::is_regular_file(origin, ec)
+                                             ? std::filesystem::path(origin).parent_path()
+                                             : std::filesystem::path();
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string p = "surfaces[" + std::to_string(i) + "]";
       s.surfaces.push_back(read_surface(list[i], p, dim, folder));
@@ -764,7 +764,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       if (on_surface) {
         bool found = false;
         std::vector<std::string> names;
-        for (const auto& sf : s.surfaces) found = found || sf.name == ps.body, names.push_back(sf.name);
+        for (const auto& sf : s.surfaces)
+          found = found || sf.name == ps.body, names.push_back(sf.name);
         if (ps.body.empty()) scene_error(p + ".surface", "missing (the name of a surface)");
         if (!found) {
           std::string hint = closest_word(ps.body, names);

@@ -92,7 +92,7 @@ struct BoundarySpec {
 // in 3D. Geometry is built by the rigid module; the scene only checks the keys and values.
 struct SurfaceSpec {
   std::string name;
-  std::string kind;           // box | plane | segment | polyline | polygon | rectangle | triangles | stl
+  std::string kind;  // box | plane | segment | polyline | polygon | rectangle | triangles | stl
   std::vector<Point> points;  // box: min, max; plane: point, normal; segment, polyline, polygon,
                               // rectangle: vertices; triangles: three corners per triangle
   double size[2] = {0, 0};    // plane: side lengths (one in 2D, two in 3D)

@@ -31,6 +31,8 @@ const Case kCases[] = {
     {"periodic_too_short.yaml", "periodic axis x"},
     {"probe_unknown_field.yaml", "no particle field 'temperature'"},
     {"output_unknown_field.yaml", "output.fields: no particle field 'vorticity'"},
+    {"surface_typo.yaml", "surfaces[0] (floor).frictoin: unknown key"},
+    {"missing_stl.yaml", "surfaces[0] (tool).stl: cannot read STL file"},
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
