@@ -169,6 +169,13 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       out.push_back(e);
     } else if (s.type == "min_distance") {
       out.push_back(sim.min_distance() / sim.dp());
+    } else if (s.type == "field_max" || s.type == "field_min") {  // extreme of a field component
+      const bool mx = s.type == "field_max";
+      double e = mx ? -std::numeric_limits<double>::infinity()
+                    : std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) e = mx ? std::max(e, value(i)) : std::min(e, value(i));
+      out.push_back(e);
     } else if (s.type == "integral" || s.type == "mean") {
       double sum = 0, vol = 0;
       for (std::size_t i = 0; i < n; ++i) {

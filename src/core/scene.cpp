@@ -183,6 +183,7 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   MapReader q(node, p);  // the same map, with the name in the paths of its keys
   q.text("name");
   s.friction = q.non_negative("friction", 0.0);
+  s.damping = q.non_negative("damping", 0.0);
   s.stiffness = q.positive("stiffness", 0.0);
   s.poisson_ratio = q.non_negative("poisson_ratio", 0.3);
   if (s.poisson_ratio >= 0.5) scene_error(q.at("poisson_ratio"), "must be below 0.5");
@@ -728,7 +729,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "kinetic_energy", "elastic_energy", "disorder",      "total_mass", "momentum",
         "abs_momentum",   "max_speed",      "min_distance",  "integral",   "mean",
         "value_at",       "tracked",        "reaction_force", "surface_force", "surface_contacts",
-        "removed_mass"};
+        "removed_mass", "field_max", "field_min"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -736,7 +737,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       ps.name = q.text("name");
       ps.type = q.choice("type", types);
       if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at" ||
-          ps.type == "tracked") {
+          ps.type == "tracked" || ps.type == "field_max" || ps.type == "field_min") {
         ps.field = q.text("field");
         auto dot = ps.field.find('.');
         if (dot != std::string::npos) {

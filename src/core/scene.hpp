@@ -101,6 +101,7 @@ struct SurfaceSpec {
   Point translate;
   std::vector<std::string> velocity_expr;  // prescribed velocity, expressions in t
   double friction = 0;                     // Coulomb coefficient mu_f
+  double damping = 0;                      // normal dashpot, ratio of critical (0: elastic Hertz)
   double stiffness = 0;                    // Young's modulus E_s; 0: rigid (E_s = infinity)
   double poisson_ratio = 0.3;              // nu_s (only with a stiffness)
 };

@@ -18,6 +18,7 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
     s.name = spec.name;
     s.geometry = SurfaceGeometry<D>(surface_elements<D>(spec, where));
     s.friction = spec.friction;
+    s.damping = spec.damping;
     for (int a = 0; a < D; ++a) {
       s.velocity_expr.emplace_back(spec.velocity_expr[a], where + ".velocity");
       s.constant = s.constant && !s.velocity_expr.back().depends_on_time();
@@ -127,7 +128,7 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
       int e;
       if (!s.geometry.closest(xl, R, c, e)) continue;
       f = contact_force<D>(xl, v[i], m[i], c, s.geometry.elements()[e].normal, s.velocity, R,
-                           s.e_star[mt[i]], s.friction, dt, depth);
+                           s.e_star[mt[i]], s.friction, dt, depth, nullptr, s.damping);
       delta_max = std::max(delta_max, R - (xl - c).norm());
       sum += f;
     }

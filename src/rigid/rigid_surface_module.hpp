@@ -49,6 +49,7 @@ class RigidSurfaceModule : public Module<D> {
     bool constant = true;
     Vec<D> v0 = Vec<D>::Zero();  // the velocity when constant
     double friction = 0;
+    double damping = 0;  // normal dashpot, ratio of critical
     std::vector<double> e_star;  // per material
     Vec<D> displacement = Vec<D>::Zero(), velocity = Vec<D>::Zero(), reaction = Vec<D>::Zero();
     int contacts = 0;

@@ -411,7 +411,7 @@ std::vector<SurfaceElement<D>> surface_elements(const SurfaceSpec& s, const std:
 template <int D>
 Vec<D> contact_force(const Vec<D>& x, const Vec<D>& v, double m, const Vec<D>& c,
                      const Vec<D>& normal, const Vec<D>& v_surface, double radius, double e_star,
-                     double friction, double dt, double depth, double* fn) {
+                     double friction, double dt, double depth, double* fn, double damping) {
   const Vec<D> d = x - c;
   const double dist = d.norm();
   const double overlap = radius - dist;
@@ -420,11 +420,15 @@ Vec<D> contact_force(const Vec<D>& x, const Vec<D>& v, double m, const Vec<D>& c
   // Direction from the closest point to the particle centre (not the face normal at edges and
   // vertices); the element normal only for a centre on the element.
   const Vec<D> n = dist > 1e-12 * radius ? Vec<D>(d / dist) : normal;
-  const double f_n = hertz_force(e_star, radius, overlap) / depth;
+  double f_n = hertz_force(e_star, radius, overlap) / depth;
+  const Vec<D> vr = v - v_surface;
+  if (damping > 0) {
+    const double kn = 1.5 * f_n / overlap;
+    f_n = std::max(0.0, f_n - 2 * damping * std::sqrt(m * kn) * vr.dot(n));
+  }
   if (fn) *fn = f_n;
   Vec<D> f = f_n * n;
   if (friction > 0) {
-    const Vec<D> vr = v - v_surface;
     const Vec<D> vt = vr - vr.dot(n) * n;
     const double s = vt.norm();
     if (s > 0) {
@@ -460,8 +464,10 @@ template class SurfaceGeometry<3>;
 template std::vector<SurfaceElement<2>> surface_elements<2>(const SurfaceSpec&, const std::string&);
 template std::vector<SurfaceElement<3>> surface_elements<3>(const SurfaceSpec&, const std::string&);
 template Vec<2> contact_force<2>(const Vec<2>&, const Vec<2>&, double, const Vec<2>&, const Vec<2>&,
-                                 const Vec<2>&, double, double, double, double, double, double*);
+                                 const Vec<2>&, double, double, double, double, double, double*,
+                                 double);
 template Vec<3> contact_force<3>(const Vec<3>&, const Vec<3>&, double, const Vec<3>&, const Vec<3>&,
-                                 const Vec<3>&, double, double, double, double, double, double*);
+                                 const Vec<3>&, double, double, double, double, double, double*,
+                                 double);
 
 }  // namespace monosph

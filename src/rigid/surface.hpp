@@ -97,9 +97,13 @@ double contact_modulus(double bulk, double shear, double e_s, double nu_s);
 // |F_t| = min(mu_f F_n, m |v_t| / dt) (it cannot reverse the sliding within a step; no cap when
 // dt <= 0). `depth` divides the force: 1 in 3D, dp in 2D (a sphere's force per metre of a plane-
 // strain slab, whose mass m is per metre). Returns the force; `fn` the normal force magnitude.
+// `damping` (ratio of critical, default 0 = MMB's purely elastic Hertz contact) adds the normal
+// dashpot -2 damping sqrt(m k_n) v_n with k_n = dF_n/d(delta) = 1.5 F_n/delta (Tsuji et al. 1992
+// form); the normal force stays repulsive.
 template <int D>
 Vec<D> contact_force(const Vec<D>& x, const Vec<D>& v, double m, const Vec<D>& c,
                      const Vec<D>& normal, const Vec<D>& v_surface, double radius, double e_star,
-                     double friction, double dt, double depth, double* fn = nullptr);
+                     double friction, double dt, double depth, double* fn = nullptr,
+                     double damping = 0);
 
 }  // namespace monosph

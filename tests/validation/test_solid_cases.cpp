@@ -17,14 +17,15 @@ double min_of(const std::vector<double>& v) {
 }  // namespace
 
 TEST(OscillatingPlate, CoarsePeriodAndCoherence) {
-  // 10 particles across (dp = 2 mm), 0.6 s: more than two periods.
+  // 10 particles across (dp = 2 mm), 0.6 s: more than two periods; MMB's xi = 0.5 with the
+  // Newmark gamma = 0.6 of the scene.
   const std::string out = out_dir("plate_coarse");
   auto r = run_monosph(
       "run " + source("cases/oscillating_plate/scene.yaml") + " --out " + out +
       " --quiet --set dp=0.002 end_time=0.6 output.every=0.3 output.checkpoint_every=0");
   ASSERT_EQ(r.code, 0) << r.output;
   auto js = summary(out);
-  EXPECT_LT(js["metrics"]["period"]["relative_error"].get<double>(), 0.03);
+  EXPECT_LT(js["metrics"]["period"]["relative_error"].get<double>(), 0.05);  // issue 3 target
   auto t = read_csv(out + "/probes.csv");
   EXPECT_LT(max_of(t["disorder"]), 0.05);
   EXPECT_GT(min_of(t["min_distance"]), 0.5);
@@ -71,6 +72,7 @@ TEST(OscillatingPlate, BodyAtRestStaysAtRestWithTheCorrectedStressDivergence) {
   const std::string base = "run " + source("cases/oscillating_plate/scene.yaml") +
                            " --quiet --set dp=0.002 end_time=0.25 output.every=1"
                            " output.checkpoint_every=0 bodies.0.hourglass.xi=0.5"
+                           " time_step.newmark_gamma=0.5"
                            " bodies.0.initial.velocity_profile.amplitude=0";
   const std::string out = out_dir("plate_rest_corrected");
   auto r = run_monosph(base + " bodies.0.stress_divergence=corrected --out " + out);
