@@ -71,9 +71,11 @@ void Shape::bounds(Point& lo, Point& hi) const {
     }
     case Kind::Cylinder:
       lo = hi = a;
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(a[k], b[k]) - r0;
-        hi[k] = std::max(a[k], b[k]) + r0;
+      for (int k = 0; k < 3; ++k) {  // the end discs reach r0 sqrt(1 - e_k^2) along axis k
+        const double ek2 = (b[k] - a[k]) * (b[k] - a[k]) / dist2(a, b);
+        const double reach = r0 * std::sqrt(std::max(0.0, 1 - ek2));
+        lo[k] = std::min(a[k], b[k]) - reach;
+        hi[k] = std::max(a[k], b[k]) + reach;
       }
       return;
     case Kind::Polygon:

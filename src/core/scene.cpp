@@ -729,7 +729,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "kinetic_energy", "elastic_energy", "disorder",      "total_mass", "momentum",
         "abs_momentum",   "max_speed",      "min_distance",  "integral",   "mean",
         "value_at",       "tracked",        "reaction_force", "surface_force", "surface_contacts",
-        "removed_mass", "field_max", "field_min"};
+        "removed_mass", "field_max", "field_min", "surface_displacement"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -752,7 +752,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       }
       ps.weight_expr = q.text("weight", "");
       if (!ps.weight_expr.empty()) check_expression(ps.weight_expr, q.at("weight"));
-      const bool on_surface = ps.type == "surface_force" || ps.type == "surface_contacts";
+      const bool on_surface = ps.type == "surface_force" || ps.type == "surface_contacts" ||
+                              ps.type == "surface_displacement";
       if (on_surface && q.has("surface")) {  // the surface's name (`body` is accepted too)
         if (q.has("body")) scene_error(p, "give either surface or body, not both");
         ps.body = q.text("surface");

@@ -159,7 +159,7 @@ double RigidSurfaceModule<D>::max_dt(Simulation<D>&) {
 template <int D>
 std::vector<std::string> RigidSurfaceModule<D>::probe_columns(const ProbeSpec& spec) const {
   if (find(spec.body) < 0) return {};
-  if (spec.type == "surface_force") {
+  if (spec.type == "surface_force" || spec.type == "surface_displacement") {
     std::vector<std::string> c;
     for (int a = 0; a < D; ++a) c.push_back(std::string("_") + "xyz"[a]);
     return c;
@@ -173,6 +173,8 @@ void RigidSurfaceModule<D>::probe(Simulation<D>&, const ProbeSpec& spec, std::ve
   const Surface& s = s_[find(spec.body)];
   if (spec.type == "surface_force")
     for (int a = 0; a < D; ++a) out.push_back(s.reaction[a]);
+  else if (spec.type == "surface_displacement")
+    for (int a = 0; a < D; ++a) out.push_back(s.displacement[a]);
   else
     out.push_back(s.contacts);
 }
