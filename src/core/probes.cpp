@@ -169,10 +169,15 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       out.push_back(e);
     } else if (s.type == "min_distance") {
       out.push_back(sim.min_distance() / sim.dp());
+    } else if (s.type == "extent") {  // max - min of a component; + dp for position (outer faces)
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) lo = std::min(lo, value(i)), hi = std::max(hi, value(i));
+      out.push_back(hi - lo + (s.field == "position" ? sim.dp() : 0.0));
     } else if (s.type == "field_max" || s.type == "field_min") {  // extreme of a field component
       const bool mx = s.type == "field_max";
-      double e = mx ? -std::numeric_limits<double>::infinity()
-                    : std::numeric_limits<double>::infinity();
+      double e =
+          mx ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e = mx ? std::max(e, value(i)) : std::min(e, value(i));
       out.push_back(e);

@@ -384,7 +384,11 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   } else {
     r.optional("plasticity");
   }
-  if (r.has("damage")) {
+  if (r.has("damage") && r.node("damage").IsScalar()) {  // `damage: none` turns a preset's off
+    if (r.node("damage").Scalar() != "none")
+      scene_error(r.at("damage"), "expected a map {D1..D5} or 'none'");
+    m.damage.on = false;
+  } else if (r.has("damage")) {
     MapReader q(r.node("damage"), r.at("damage"));
     q.choice("type", {"johnson_cook"}, "johnson_cook");
     JohnsonCookDamage& d = m.damage;
@@ -729,7 +733,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "kinetic_energy", "elastic_energy", "disorder",      "total_mass", "momentum",
         "abs_momentum",   "max_speed",      "min_distance",  "integral",   "mean",
         "value_at",       "tracked",        "reaction_force", "surface_force", "surface_contacts",
-        "removed_mass", "field_max", "field_min", "surface_displacement"};
+        "removed_mass", "field_max", "field_min", "extent", "surface_displacement"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -737,7 +741,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       ps.name = q.text("name");
       ps.type = q.choice("type", types);
       if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at" ||
-          ps.type == "tracked" || ps.type == "field_max" || ps.type == "field_min") {
+          ps.type == "tracked" || ps.type == "field_max" || ps.type == "field_min" ||
+          ps.type == "extent") {
         ps.field = q.text("field");
         auto dot = ps.field.find('.');
         if (dot != std::string::npos) {

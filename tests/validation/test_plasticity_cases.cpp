@@ -47,3 +47,37 @@ TEST(Upsetting, ForceFollowsTheJohnsonCookFlowCurve) {
   // Equal and opposite plate forces once the billet is in equilibrium.
   EXPECT_NEAR(force.back(), -t["bottom_force_z"].back(), 0.02 * force.back());
 }
+
+TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
+  // 3D, 6 particles across the diameter (about 900 particles), 100 us: the bar comes to rest
+  // with length and mushroom diameter within 15 % of House et al. 1995 (29.9 mm, 13.5 mm; MMB
+  // report about 10 % error in the length). Finer runs: cases/taylor_bar/README.md.
+  const std::string out = out_dir("taylor_3d_coarse");
+  auto r = run_monosph("run " + source("cases/taylor_bar/scene.yaml") + " --out " + out +
+                       " --quiet --set dp=1.2658333333333333e-3 output.every=1");
+  ASSERT_EQ(r.code, 0) << r.output;
+  auto t = read_csv(out + "/probes.csv");
+  EXPECT_LT(t["kinetic_energy"].back(), 0.01 * t["kinetic_energy"].front());
+  EXPECT_NEAR(t["length"].back(), 29.9e-3, 0.15 * 29.9e-3);
+  EXPECT_NEAR(t["diameter_x"].back(), 13.5e-3, 0.15 * 13.5e-3);
+  EXPECT_NEAR(t["diameter_y"].back(), t["diameter_x"].back(), 0.05 * t["diameter_x"].back());
+  EXPECT_GT(max_of(t["max_plastic_strain"]), 1.0);
+  EXPECT_GT(max_of(t["max_temperature"]), 292 + 50.0);  // adiabatic heating at the impact face
+  EXPECT_GT(min_of(t["min_distance"]), 0.1);
+}
+
+TEST(TaylorBar, PlaneStrainImpactRunsToRest) {
+  // 2D plane strain, 10 particles across, 80 us (about a second): the slab stops on the wall as
+  // one piece. Plane strain spreads more than the round bar; the bounds are those of the
+  // 20-across run (length 27.2 mm, width 26.2 mm) with 10 % and 15 % margins.
+  const std::string out = out_dir("taylor_2d");
+  auto r = run_monosph("run " + source("cases/taylor_bar/scene_2d.yaml") + " --out " + out +
+                       " --quiet --set dp=7.595e-4 output.every=1");
+  ASSERT_EQ(r.code, 0) << r.output;
+  auto t = read_csv(out + "/probes.csv");
+  EXPECT_LT(t["kinetic_energy"].back(), 0.01 * t["kinetic_energy"].front());
+  EXPECT_NEAR(t["length"].back(), 27.2e-3, 0.1 * 27.2e-3);
+  EXPECT_NEAR(t["width"].back(), 26.2e-3, 0.15 * 26.2e-3);
+  EXPECT_GT(min_of(t["min_distance"]), 0.15);
+  EXPECT_LT(max_of(t["max_plastic_strain"]), 4.0);
+}
