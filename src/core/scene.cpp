@@ -398,6 +398,7 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     d.d3 = q.number("D3", d.d3);
     d.d4 = q.number("D4", d.d4);
     d.d5 = q.number("D5", d.d5);
+    d.min_failure_strain = q.positive("min_failure_strain", d.min_failure_strain);
     q.finish();
   } else {
     r.optional("damage");

@@ -37,6 +37,8 @@ struct JohnsonCook {
 struct JohnsonCookDamage {
   bool on = false;
   double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;
+  double min_failure_strain = 1e-6;  // floor of eps_f (as LS-DYNA's EFMIN): D1 < 0 fits give
+                                     // eps_f <= 0 at high triaxiality
 };
 
 struct Material {

@@ -79,7 +79,7 @@ double jc_failure_strain(const JohnsonCookDamage& d, const JohnsonCook& jc, doub
   const double a = d.d1 + d.d2 * std::exp(d.d3 * triaxiality);
   const double b = 1 + d.d4 * std::log(std::max(rate / jc.rate0, 1.0));
   const double c = 1 + d.d5 * homologous_temperature(jc, T);
-  return std::max(a * b * c, 1e-6);
+  return std::max(a * b * c, d.min_failure_strain);
 }
 
 bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, double rho, double dt) {

@@ -29,7 +29,8 @@ ReturnResult radial_return(Mat3& S, double mu, const JohnsonCook& jc, double eps
                            double dt);
 
 // Johnson-Cook failure strain (MMB Eq. 26) at triaxiality sigma* = -p/sigma_eq; the rate factor
-// uses max(rate/rate0, 1); floored at 1e-6 so that very high triaxiality fails at once.
+// uses max(rate/rate0, 1); floored at d.min_failure_strain (default 1e-6: very high
+// triaxiality fails at once).
 double jc_failure_strain(const JohnsonCookDamage& d, const JohnsonCook& jc, double triaxiality,
                          double rate, double T);
 

@@ -184,11 +184,16 @@ void SolidModule<D>::constitutive(Simulation<D>& sim) {
     art = p.template view<Mat<D>>(kas_);
     shep = p.template view<double>("shepard");
   }
+  std::span<double> dmg;
+  if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
   const auto& bodies = sim.bodies();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
+    // A failed particle (D >= 1) is cracked material: no deviatoric stress (MMB Sect. 2.3) and,
+    // beyond MMB, no tension either (p >= 0), or failed neighbours pull each other together.
+    if (kdmg_ >= 0 && dmg[i] >= 1 && pr[i] < 0) pr[i] = 0;
     vm[i] = von_mises(S[i]);
     if (any_as_) {
       const double eps = bodies[bd[i]].as_epsilon;
