@@ -2,6 +2,7 @@
 // Runs the monosph binary and reads what it wrote.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -69,6 +70,13 @@ inline Table read_csv(const std::string& file) {
       t.cols[k].push_back(std::stod(c));
   }
   return t;
+}
+
+inline double max_of(const std::vector<double>& v) {
+  return *std::max_element(v.begin(), v.end());
+}
+inline double min_of(const std::vector<double>& v) {
+  return *std::min_element(v.begin(), v.end());
 }
 
 }  // namespace monosph::test

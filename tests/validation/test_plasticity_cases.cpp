@@ -8,15 +8,6 @@
 
 using namespace monosph::test;
 
-namespace {
-double max_of(const std::vector<double>& v) {
-  return *std::max_element(v.begin(), v.end());
-}
-double min_of(const std::vector<double>& v) {
-  return *std::min_element(v.begin(), v.end());
-}
-}  // namespace
-
 TEST(Upsetting, ForceFollowsTheJohnsonCookFlowCurve) {
   // 10 particles across the diameter, 150 us: 1.4 mm of the 2.5 mm travel. The plate force must
   // follow the homogeneous estimate sigma_JC(ln h0/h) A0 h0/h (Al 6061-T6, rate and heat small)

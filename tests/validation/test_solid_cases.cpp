@@ -7,15 +7,6 @@
 
 using namespace monosph::test;
 
-namespace {
-double max_of(const std::vector<double>& v) {
-  return *std::max_element(v.begin(), v.end());
-}
-double min_of(const std::vector<double>& v) {
-  return *std::min_element(v.begin(), v.end());
-}
-}  // namespace
-
 TEST(OscillatingPlate, CoarsePeriodAndCoherence) {
   // 10 particles across (dp = 2 mm), 0.6 s: more than two periods; MMB's xi = 0.5 with the
   // Newmark gamma = 0.6 of the scene.
