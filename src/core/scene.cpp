@@ -392,10 +392,11 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     MapReader q(r.node("damage"), r.at("damage"));
     q.choice("type", {"johnson_cook"}, "johnson_cook");
     JohnsonCookDamage& d = m.damage;
+    const bool preset = d.on;  // D1-D3 have no neutral value: required unless a preset gave them
     d.on = true;
-    d.d1 = q.number("D1", d.d1);
-    d.d2 = q.number("D2", d.d2);
-    d.d3 = q.number("D3", d.d3);
+    d.d1 = preset ? q.number("D1", d.d1) : q.number("D1");
+    d.d2 = preset ? q.number("D2", d.d2) : q.number("D2");
+    d.d3 = preset ? q.number("D3", d.d3) : q.number("D3");
     d.d4 = q.number("D4", d.d4);
     d.d5 = q.number("D5", d.d5);
     d.min_failure_strain = q.positive("min_failure_strain", d.min_failure_strain);

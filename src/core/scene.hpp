@@ -43,16 +43,19 @@ struct JohnsonCookDamage {
 
 struct Material {
   std::string name;
-  double density = 0;          // rho0
-  double bulk_modulus = 0;     // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
-  double shear_modulus = 0;    // mu
-  JohnsonCook plasticity;      // J2 plasticity (MMB Eq. 22-23) when `on`
-  JohnsonCookDamage damage;    // Johnson-Cook damage (MMB Eq. 25-26) when `on`
-  double heat_capacity = 0;    // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
-  double taylor_quinney = 0.9; // eta of MMB Eq. 24
+  double density = 0;           // rho0
+  double bulk_modulus = 0;      // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
+  double shear_modulus = 0;     // mu
+  JohnsonCook plasticity;       // J2 plasticity (MMB Eq. 22-23) when `on`
+  JohnsonCookDamage damage;     // Johnson-Cook damage (MMB Eq. 25-26) when `on`
+  double heat_capacity = 0;     // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
+  double taylor_quinney = 0.9;  // eta of MMB Eq. 24
+  double pressure(double rho) const { return bulk_modulus * (rho / density - 1.0); }  // Eq. 13
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
-  double youngs_modulus() const { return 9 * bulk_modulus * shear_modulus / (3 * bulk_modulus + shear_modulus); }
+  double youngs_modulus() const {
+    return 9 * bulk_modulus * shear_modulus / (3 * bulk_modulus + shear_modulus);
+  }
 };
 
 // Named materials shipped with the code (MMB Table 1): "Al6061-T6", "PMMA". Empty if unknown.
@@ -137,8 +140,8 @@ struct Scene {
   Point body_force;
   double end_time = 0;
   double cfl = 0.3, force_factor = 0.25, max_dt = 0, dt_collapse = 1e-4;
-  // Explicit Newmark (beta = 0): v_{n+1} = v_n + dt((1 - gamma) a_n + gamma a_{n+1}). 0.5 is velocity
-  // Verlet (no numerical dissipation); gamma > 0.5 damps modes near the step frequency.
+  // Explicit Newmark (beta = 0): v_{n+1} = v_n + dt((1 - gamma) a_n + gamma a_{n+1}). 0.5 is
+  // velocity Verlet (no numerical dissipation); gamma > 0.5 damps modes near the step frequency.
   double newmark_gamma = 0.5;
   double max_mach = 0.5, min_distance = 0.1;
   double output_every = 0, checkpoint_every = 0, probe_every = 0;

@@ -250,6 +250,31 @@ void Simulation<D>::kick(double h, double t_bc) {
 }
 
 template <int D>
+void Simulation<D>::newmark_kick(double dt) {
+  // Second kick of explicit Newmark (beta = 0): with the first half kick already applied,
+  // v += dt (gamma a_{n+1} - (gamma - 1/2) a_n); a_{n+1} is kept as the next step's a_n.
+  const double g = scene_.newmark_gamma;
+  auto v = p_.v();
+  auto a = p_.a();
+  auto ap = p_.template view<V>(kaprev_);
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    v[i] += dt * (g * a[i] - (g - 0.5) * ap[i]);
+    ap[i] = a[i];
+  }
+  apply_bc_velocity(t_);
+}
+
+template <int D>
+void Simulation<D>::keep_acceleration() {
+  if (kaprev_ < 0) return;
+  auto a = p_.a();
+  auto ap = p_.template view<V>(kaprev_);
+  std::copy(a.begin(), a.end(), ap.begin());
+}
+
+template <int D>
 void Simulation<D>::drift(double dt) {
   auto x = p_.x();
   auto v = p_.v();
@@ -366,12 +391,14 @@ void Simulation<D>::init(bool restarted) {
     update_pair_cache();
     if (dt_ <= 0) dt_ = compute_dt();
     dt0_ = dt_;
+    keep_acceleration();
     return;
   }
   rebuild_requested_ = true;
   update_neighbours();
   apply_bc_velocity(t_);
   compute_forces();
+  keep_acceleration();
   check_guards();
   dt_ = compute_dt();
   dt0_ = dt_;
@@ -382,12 +409,6 @@ void Simulation<D>::advance(double stop) {
   // Approach `stop` in at most two equal steps so that no sliver of a step is left.
   const double rest = stop - t_;
   const double dt = rest <= dt_ ? rest : rest < 2 * dt_ ? 0.5 * rest : dt_;
-  const double g = scene_.newmark_gamma;
-  if (kaprev_ >= 0) {
-    auto a = p_.a();
-    auto ap = p_.template view<V>(kaprev_);
-    std::copy(a.begin(), a.end(), ap.begin());
-  }
   kick(0.5 * dt, t_ + 0.5 * dt);
   for (auto& m : modules_) m->rates(*this);
   drift(dt);
@@ -395,16 +416,10 @@ void Simulation<D>::advance(double stop) {
   ++step_;
   update_neighbours();
   compute_forces();
-  if (kaprev_ >= 0) {
-    // Newmark gamma: v += dt (gamma - 1/2)(a_{n+1} - a_n) on top of the Verlet half kick.
-    auto v = p_.v();
-    auto a = p_.a();
-    auto ap = p_.template view<V>(kaprev_);
-    const std::size_t n = p_.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) v[i] += (g - 0.5) * dt * (a[i] - ap[i]);
-  }
-  kick(0.5 * dt, t_);
+  if (kaprev_ >= 0)
+    newmark_kick(dt);
+  else
+    kick(0.5 * dt, t_);
   check_guards();
   dt_ = compute_dt();
   if (dt_ < scene_.dt_collapse * dt0_) {

@@ -129,6 +129,9 @@ class Simulation {
 
  private:
   void kick(double h, double t_bc);
+  void newmark_kick(double dt);  // second kick with time_step.newmark_gamma (docs/theory.md)
+  void keep_acceleration();      // a_n for the first Newmark step
+
   void drift(double dt);
   void update_neighbours();
   void compute_forces();

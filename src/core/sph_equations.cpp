@@ -126,7 +126,7 @@ void SphEquations<D>::constitutive(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const Material& mm = mats[mt[i]];
-    pr[i] = mm.bulk_modulus * (rho[i] / mm.density - 1.0);  // MMB Eq. 13
+    pr[i] = mm.pressure(rho[i]);  // MMB Eq. 13
   }
 }
 

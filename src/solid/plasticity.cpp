@@ -13,6 +13,15 @@ double homologous_temperature(const JohnsonCook& jc, double T) {
 }
 
 namespace {
+// First and third factors of MMB Eq. 23.
+double hardening(const JohnsonCook& jc, double e) {
+  return jc.A + (jc.B > 0 && e > 0 ? jc.B * std::pow(e, jc.n) : 0.0);
+}
+double thermal_factor(const JohnsonCook& jc, double T) {
+  const double ts = homologous_temperature(jc, T);
+  return ts > 0 ? 1 - std::pow(ts, jc.m) : 1.0;
+}
+
 // The three factors of MMB Eq. 23 and the derivative of the first two with respect to deps.
 struct Yield {
   double value, slope;
@@ -20,7 +29,7 @@ struct Yield {
 
 Yield yield_and_slope(const JohnsonCook& jc, double eps_p, double deps, double dt, double theta) {
   const double e = eps_p + deps;
-  const double hard = jc.A + (jc.B > 0 && e > 0 ? jc.B * std::pow(e, jc.n) : 0.0);
+  const double hard = hardening(jc, e);
   const double dhard = jc.B > 0 && e > 0 ? jc.B * jc.n * std::pow(e, jc.n - 1) : 0.0;
   double rate_f = 1, drate_f = 0;
   if (jc.C > 0 && dt > 0 && deps > 0) {
@@ -32,18 +41,14 @@ Yield yield_and_slope(const JohnsonCook& jc, double eps_p, double deps, double d
 }  // namespace
 
 double jc_yield(const JohnsonCook& jc, double eps_p, double rate, double T) {
-  const double hard = jc.A + (jc.B > 0 && eps_p > 0 ? jc.B * std::pow(eps_p, jc.n) : 0.0);
   const double rate_f = jc.C > 0 && rate > jc.rate0 ? 1 + jc.C * std::log(rate / jc.rate0) : 1.0;
-  const double ts = homologous_temperature(jc, T);
-  const double theta = ts > 0 ? 1 - std::pow(ts, jc.m) : 1.0;
-  return hard * rate_f * theta;
+  return hardening(jc, eps_p) * rate_f * thermal_factor(jc, T);
 }
 
 ReturnResult radial_return(Mat3& S, double mu, const JohnsonCook& jc, double eps_p, double T,
                            double dt) {
   ReturnResult r;
-  const double ts = homologous_temperature(jc, T);
-  const double theta = ts > 0 ? 1 - std::pow(ts, jc.m) : 1.0;
+  const double theta = thermal_factor(jc, T);
   const double s_tr = von_mises(S);
   // Elastic predictor: the rate factor is 1 at zero plastic rate (MMB Eq. 22-23).
   r.sigma_y = yield_and_slope(jc, eps_p, 0.0, dt, theta).value;
@@ -97,8 +102,8 @@ bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, double rho, do
   if (m.heat_capacity > 0) pt.T += m.taylor_quinney * r.sigma_y * r.deps / (rho * m.heat_capacity);
   if (m.damage.on && r.sigma_y > 0) {
     // MMB Eq. 25-26 with the triaxiality sigma* = -p / sigma_eq.
-    const double p = m.bulk_modulus * (rho / m.density - 1);
-    const double ef = jc_failure_strain(m.damage, m.plasticity, -p / r.sigma_y, pt.rate, pt.T);
+    const double ef =
+        jc_failure_strain(m.damage, m.plasticity, -m.pressure(rho) / r.sigma_y, pt.rate, pt.T);
     pt.D = std::min(1.0, pt.D + r.deps / ef);
     if (pt.D >= 1) S.setZero();
   }

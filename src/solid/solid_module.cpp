@@ -148,7 +148,8 @@ void SolidModule<D>::erode(Simulation<D>& sim) {
   const double w0 = sim.kernel().w(0.0);
   const std::size_t n = p.size();
   if (pl.count.size() != n || grp.size() != n) return;
-  std::vector<char> flag(n, 0);
+  auto& flag = erode_flag_;
+  flag.assign(n, 0);
   long count = 0;
 #pragma omp parallel for reduction(+ : count) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {

@@ -40,6 +40,7 @@ class SolidModule : public Module<D> {
   void erode(Simulation<D>& sim);
   int kep_ = -1, kepr_ = -1, kT_ = -1, kdmg_ = -1, ksy_ = -1;
   bool any_plastic_ = false, any_damage_ = false, any_erosion_ = false;
+  std::vector<char> erode_flag_;  // particles to erode this step (kept: no allocation per step)
 
   int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1;
   bool any_ls_ = false;
