@@ -110,12 +110,16 @@ class Kernel {
   // per step, with q on either side of 1 at random): with a = max(2 - q, 0), b = max(1 - q, 0),
   // S = a^3 - 4 b^3 and S'(q)/q = (-3 a^2 + 12 b^2)/q = 9q - 12 for q < 1.
   void wf_cubic(double r2, double& wv, double& fv) const {
+    // Written with arithmetic instead of max/?: so that the compiler emits no branches:
+    // ramp(t) = (t + |t|)/2 = max(t, 0) exactly; the select is a product with 0 or 1.
+    auto ramp = [](double t) { return 0.5 * (t + std::abs(t)); };
     const double q = std::sqrt(r2) * inv_h_;
-    const double a = std::max(2.0 - q, 0.0), b = std::max(1.0 - q, 0.0);
+    const double a = ramp(2.0 - q), b = ramp(1.0 - q);
     wv = k_ * (a * a * a - 4.0 * b * b * b);
     const double c = k_ * inv_h_ * inv_h_;
-    const double inner = 9.0 * q - 12.0, outer = -3.0 * a * a / std::max(q, 1.0);
-    fv = c * (q < 1.0 ? inner : outer);
+    const double inner = 9.0 * q - 12.0, outer = -3.0 * a * a / (1.0 + ramp(q - 1.0));
+    const double in = static_cast<double>(q < 1.0);
+    fv = c * (outer + in * (inner - outer));
   }
 
   // W and F together from the squared distance (one root, no work beyond the support).

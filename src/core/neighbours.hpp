@@ -47,6 +47,10 @@ class Neighbours {
     return xi - xj - shift_[code_[k]];
   }
   const Vec<D>& shift(std::size_t k) const { return shift_[code_[k]]; }
+  // Raw arrays for hot loops: neighbour of slot k, its shift code, the shift of each code.
+  const int* nbr_data() const { return nbr_.data(); }
+  const std::uint8_t* code_data() const { return code_.data(); }
+  const std::array<Vec<D>, kShifts>& shifts() const { return shift_; }
 
  private:
   std::array<int, D> cell_of(const Vec<D>& x) const;

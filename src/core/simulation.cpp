@@ -310,29 +310,47 @@ void Simulation<D>::update_pair_cache() {
   rmin_.resize(n);
   jmin_.resize(n);
   const bool cubic = W.type() == KernelType::CubicSpline;
+  // Raw pointers held in registers: stores through the pair arrays cannot alias them.
+  std::size_t* __restrict first = pl.first.data();
+  int* __restrict cnt = pl.count.data();
+  int* __restrict pj = pl.j.data();
+  V* __restrict pr = pl.r.data();
+  double* __restrict pw = pl.w.data();
+  double* __restrict pf = pl.f.data();
+  const V* __restrict xs = x.data();
+  const Neighbours<D>& nb = nb_;
+  const int* __restrict nbr = nb.nbr_data();
+  const std::uint8_t* __restrict code = nb.code_data();
+  const std::array<V, Neighbours<D>::kShifts> shift = nb.shifts();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;
     vol_[i] = m[i] / rho[i];
     double best = std::numeric_limits<double>::infinity();
     int jb = -1;
-    std::size_t q = nb_.begin(i);
-    pl.first[i] = q;
-    for (std::size_t k = nb_.begin(i); k < nb_.end(i); ++k) {
-      const int j = nb_.nbr(k);
-      const V r = nb_.rij(x[i], x[j], k);
+    const std::size_t k0 = nb.begin(i), k1 = nb.end(i);
+    std::size_t q = k0;
+    first[i] = q;
+    const V xi = xs[i];
+    for (std::size_t k = k0; k < k1; ++k) {
+      const int j = nbr[k];
+      const V r = xi - xs[j] - shift[code[k]];
       const double r2 = r.squaredNorm();
       if (r2 < best) best = r2, jb = j;
       // Branch-free compaction: the slot is written always and kept if inside the support.
-      pl.j[q] = j;
-      pl.r[q] = r;
-      if (cubic)
-        W.wf_cubic(r2, pl.w[q], pl.f[q]);
-      else
-        W.wf(r2, pl.w[q], pl.f[q]);
+      pj[q] = j;
+      pr[q] = r;
+      pw[q] = r2;
       q += r2 < rs2;
     }
-    pl.count[i] = static_cast<int>(q - pl.first[i]);
+    // Kernel values of the kept pairs in a dense loop (the compiler vectorises the root and
+    // the division, the slowest part, when the kernel is the branch-free cubic spline).
+    if (cubic) {
+      for (std::size_t k = k0; k < q; ++k) W.wf_cubic(pw[k], pw[k], pf[k]);
+    } else {
+      for (std::size_t k = k0; k < q; ++k) W.wf(pw[k], pw[k], pf[k]);
+    }
+    cnt[i] = static_cast<int>(q - k0);
     rmin_[i] = std::sqrt(best);
     jmin_[i] = jb;
   }

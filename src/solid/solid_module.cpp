@@ -425,9 +425,9 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       // MMB Eq. 32: stiffness-based force along the current pair direction (1 - chi: Eq. 34).
       // Pair modulus: symmetric so that the pair forces stay equal and opposite.
       const double Eij = sw ? 0.5 * (Ei + (ep[j] > 0 ? sy[j] : E)) : E;
-      const double kij = vol[j] * w * Eij / X2;
-      kappa += kij;
-      f += (kstiff * kij * ed / r2) * d;
+      const double kw = vol[j] * w * Eij, inv = 1.0 / (X2 * r2);  // one division per pair
+      kappa += kw * r2 * inv;                                         // k_ij = kw / X2
+      f += (kstiff * kw * ed * inv) * d;
       // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).
       if (kvisc != 0) {
         const double vr = (v[j] - v[i]).dot(d);
