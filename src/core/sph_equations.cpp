@@ -9,11 +9,12 @@ template <int D>
 Mat<D> invert_correction(const Mat<D>& b) {
   using M = Eigen::Matrix<double, D, D>;
   const M bs = 0.5 * (M(b) + M(b).transpose());
-  if constexpr (D == 2) {  // closed-form eigenvalues of a symmetric 2x2 matrix
-    const double t = 0.5 * bs.trace(), det = bs.determinant();
-    const double lmin = t - std::sqrt(std::max(0.0, t * t - det));
-    if (lmin >= 0.02) return Mat<D>(bs.inverse());
-  }
+  // Smallest eigenvalue >= 0.02 <=> bs - 0.02 I is positive definite (Sylvester: all leading
+  // principal minors positive) -- the common case, without an eigen-decomposition.
+  const M c = bs - 0.02 * M::Identity();
+  bool pd = c(0, 0) > 0 && c(0, 0) * c(1, 1) - c(0, 1) * c(1, 0) > 0;
+  if constexpr (D == 3) pd = pd && c.determinant() > 0;
+  if (pd) return Mat<D>(bs.inverse());
   Eigen::SelfAdjointEigenSolver<M> es;
   es.computeDirect(bs);
   auto lam = es.eigenvalues();

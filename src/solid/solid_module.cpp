@@ -434,7 +434,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
         if (vr * ed < 0) {
           const double rbar = 0.5 * (rho[i] + rho[j]);
           f +=
-              (kvisc * m[j] / rbar * std::sqrt(eps.squaredNorm() / X2) * vr / (r2 + eta2) * pf[k]) *
+              (kvisc * m[j] / rbar * std::sqrt(eps.squaredNorm() * r2 * inv) * vr / (r2 + eta2) * pf[k]) *
               d;
         }
       }
