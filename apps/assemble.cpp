@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/sph_equations.hpp"
+#include "fluid/fluid_module.hpp"
 #include "rigid/rigid_surface_module.hpp"
 #include "solid/solid_module.hpp"
 
@@ -14,8 +15,17 @@ void assemble_modules(Simulation<D>& sim) {
   auto enabled = [&](const char* m) {
     return std::find(mods.begin(), mods.end(), m) != mods.end();
   };
-  // The shared Eulerian SPH equations are always on (first: the others read their sums).
-  sim.add_module(std::make_unique<SphEquations<D>>(sim, enabled("solid")));
+  // The shared Eulerian SPH equations (first: the solid module reads their sums) run for solids,
+  // and for fluids only in a scene without the delta-plus fluid module. A fluid-only scene
+  // carries none of their fields.
+  const bool any_solid = std::any_of(sim.bodies().begin(), sim.bodies().end(),
+                                     [](const BodyInfo& b) { return b.phase == kSolid; });
+  if (any_solid || !enabled("fluid")) {
+    auto sph = std::make_unique<SphEquations<D>>(sim, enabled("solid"));
+    sph->set_solids_only(enabled("fluid"));
+    sim.add_module(std::move(sph));
+  }
+  if (enabled("fluid")) sim.add_module(std::make_unique<FluidModule<D>>(sim));
   if (enabled("solid")) sim.add_module(std::make_unique<SolidModule<D>>(sim));
   if (enabled("rigid")) sim.add_module(std::make_unique<RigidSurfaceModule<D>>(sim));
 }

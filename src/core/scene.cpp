@@ -50,7 +50,7 @@ int Scene::material_index(const std::string& n) const {
 
 namespace {
 
-const std::vector<std::string> kModules = {"solid", "rigid"};  // physics modules for scenes
+const std::vector<std::string> kModules = {"solid", "rigid", "fluid"};  // physics modules for scenes
 
 void check_expression(const std::string& text, const std::string& path) {
   Expression e(text, path);
@@ -363,6 +363,7 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   m.shear_modulus = r.non_negative("shear_modulus", m.shear_modulus);
   m.heat_capacity = r.non_negative("heat_capacity", m.heat_capacity);
   m.taylor_quinney = r.non_negative("taylor_quinney", m.taylor_quinney);
+  m.viscosity = r.non_negative("viscosity", m.viscosity);
   if (m.taylor_quinney > 1) scene_error(r.at("taylor_quinney"), "must lie in [0, 1]");
   if (r.has("plasticity")) {
     // MMB Eq. 23 (Johnson & Cook 1983); perfect plasticity is B = 0.
@@ -494,8 +495,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     for (const auto& m : r.strings("modules")) {
       if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
         scene_error("modules", "unknown module '" + m +
-                                   "' (available: solid, rigid; the basic Eulerian SPH "
-                                   "equations are always on)");
+                                   "' (available: solid, rigid, fluid; they are switched on by "
+                                   "the bodies and surfaces that need them)");
       s.modules.push_back(m);
     }
   } else {
@@ -514,7 +515,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
       for (const auto& other : s.bodies)
         if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
-      body.phase = b.choice("phase", {"fluid", "solid"});
+      body.phase = b.choice("phase", {"fluid", "solid", "wall"});
       body.continuum = b.text("continuum", body.name);
       std::string mat = b.text("material");
       body.material = s.material_index(mat);
@@ -596,6 +597,22 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("hourglass");
       }
+      if (b.has("shifting")) {  // delta-plus particle shifting (Sun et al. 2017)
+        if (body.phase != "fluid") scene_error(p + ".shifting", "applies to fluid bodies only");
+        MapReader sh(b.node("shifting"), p + ".shifting");
+        body.shift_speed = sh.positive("speed");
+        body.shift_R = sh.non_negative("R", 0.2);
+        body.shift_n = sh.positive("n", 4.0);
+        sh.finish();
+      } else {
+        b.optional("shifting");
+      }
+      if (b.has("slip")) {
+        if (body.phase == "fluid") scene_error(p + ".slip", "applies to wall-like (non-fluid) bodies");
+        body.no_slip = b.choice("slip", {"no_slip", "free_slip"}) == "no_slip";
+      } else {
+        b.optional("slip");
+      }
       if (b.has("erosion")) {
         if (body.phase != "solid") scene_error(p + ".erosion", "applies to solid bodies only");
         const std::string e = b.choice("erosion", {"none", "failed", "failed_surface"});
@@ -626,6 +643,11 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
               "bodies[" + std::to_string(i) + "] (" + s.bodies[i].name + ").stress_divergence",
               "differs from body '" + s.bodies[j].name + "' of the same continuum '" +
                   s.bodies[i].continuum + "'");
+    // A fluid or wall body needs the fluid module.
+    for (const auto& body : s.bodies)
+      if ((body.phase == "fluid" || body.phase == "wall") &&
+          std::find(s.modules.begin(), s.modules.end(), "fluid") == s.modules.end())
+        s.modules.push_back("fluid");
     // A solid body needs the solid module: switch it on.
     for (const auto& body : s.bodies)
       if (body.phase == "solid" &&

@@ -50,6 +50,7 @@ struct Material {
   JohnsonCookDamage damage;     // Johnson-Cook damage (MMB Eq. 25-26) when `on`
   double heat_capacity = 0;     // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
   double taylor_quinney = 0.9;  // eta of MMB Eq. 24
+  double viscosity = 0;         // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
   double pressure(double rho) const { return bulk_modulus * (rho / density - 1.0); }  // Eq. 13
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
@@ -64,7 +65,7 @@ std::vector<std::string> library_material_names();
 
 struct BodySpec {
   std::string name;
-  std::string phase;      // fluid | solid
+  std::string phase;      // fluid | solid | wall
   std::string continuum;  // solid bodies with the same continuum name interact as one body
   int material = 0;
   Shape shape;
@@ -82,6 +83,10 @@ struct BodySpec {
   bool corrected_divergence = false;
   bool hg_plastic_switch = false;  // Ganzenmueller: E -> yield stress in Eq. 32 when plastic
   double temperature = 0;          // initial temperature, K (0: the material's T_ref)
+  // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),
+  // the anti-clustering term R (W_ij / W(dp))^n.
+  double shift_speed = 0, shift_R = 0.2, shift_n = 4;
+  bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
   int erosion = 0;                 // remove particles with D >= 1: 0 never, 1 all, 2 surface only
 };
 

@@ -25,13 +25,14 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
   std::vector<std::string> continua;
   for (const auto& b : scene_.bodies) {
-    int g = -1;
-    if (b.phase != "fluid") {
+    int g = b.phase == "fluid" ? -1 : -2;
+    if (b.phase == "solid") {
       auto it = std::find(continua.begin(), continua.end(), b.continuum);
       g = static_cast<int>(it - continua.begin());
       if (it == continua.end()) continua.push_back(b.continuum);
     }
-    BodyInfo info{b.name,     b.phase == "fluid" ? kFluid : kSolid,
+    const Phase ph = b.phase == "fluid" ? kFluid : b.phase == "wall" ? kWall : kSolid;
+    BodyInfo info{b.name,     ph,
                   b.material, b.av_alpha,
                   b.av_beta,  b.as_epsilon,
                   b.as_n,     b.delta,
@@ -42,6 +43,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     info.temperature = b.temperature;
     info.erosion = b.erosion;
     info.group = g;
+    info.shift_speed = b.shift_speed, info.shift_R = b.shift_R, info.shift_n = b.shift_n;
+    info.no_slip = b.no_slip;
     bodies_.push_back(std::move(info));
   }
   removed_mass_.assign(bodies_.size(), 0.0);

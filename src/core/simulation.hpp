@@ -65,7 +65,9 @@ struct BodyInfo {
   bool hg_plastic_switch = false;     // Ganzenmueller 2015: E -> sigma_y in Eq. 32 when plastic
   double temperature = 0;             // initial temperature (K)
   int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
-  int group = 0;  // interaction group: bodies of one continuum share it (-1: all fluid)
+  double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)
+  bool no_slip = true;                                 // wall-like body seen by the fluid
+  int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls)
 };
 
 template <int D>

@@ -47,9 +47,11 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
   auto shep = p.template view<double>(kshep_);
   auto corr = p.template view<Mat<D>>(kcorr_);
   const double w0 = sim.kernel().w(0.0);
+  auto ph = p.phase();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (solids_only_ && ph[i] != kSolid) continue;
     const int gi = grp[i];
     double s = vol[i] * w0;
     Mat<D> b = Mat<D>::Zero();
@@ -83,6 +85,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   const auto& mats = sim.materials();
   auto mt = p.material();
   auto bd = p.body();
+  auto ph = p.phase();
   const double h = sim.kernel().h();
   const std::size_t n = p.size();
   if (any_diffusion_) {
@@ -93,6 +96,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (solids_only_ && ph[i] != kSolid) continue;
     const int gi = grp[i];
     Mat<D> g = Mat<D>::Zero();
     double diff = 0;
@@ -122,10 +126,12 @@ void SphEquations<D>::constitutive(Simulation<D>& sim) {
   auto rho = p.rho();
   auto pr = p.p();
   auto mt = p.material();
+  auto ph = p.phase();
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (solids_only_ && ph[i] != kSolid) continue;
     const Material& mm = mats[mt[i]];
     pr[i] = mm.pressure(rho[i]);  // MMB Eq. 13
   }
@@ -149,6 +155,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   auto mt = p.material();
   auto shep = p.template view<double>(kshep_);
   auto corr = p.template view<Mat<D>>(kcorr_);
+  auto ph = p.phase();
   if (kstress_ < 0) kstress_ = p.find("deviatoric_stress");
   std::span<Mat3> dev;
   if (kstress_ >= 0) dev = p.template view<Mat3>(kstress_);
@@ -192,6 +199,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (solids_only_ && ph[i] != kSolid) continue;
     const int gi = grp[i];
     const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
     Vec<D> acc = Vec<D>::Zero(), accs = Vec<D>::Zero();

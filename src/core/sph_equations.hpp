@@ -2,7 +2,8 @@
 // The Eulerian SPH equations every phase shares (Mohseni-Mofidi & Bierwisch 2020, "MMB"):
 // Shepard sum and correction matrix (Eq. 7-10), velocity gradient (Eq. 16), continuity and
 // momentum (Eq. 11) with Sigma = -p I + S (Eq. 12), linear EOS (Eq. 13), artificial viscosity
-// (Eq. 17-18). Particles interact here if both are fluid, or both belong to the same solid body.
+// (Eq. 17-18). Particles interact here if both are fluid, or both belong to the same solid body
+// (fluids move to the delta-plus FluidModule when a scene has one: set_solids_only).
 #include "simulation.hpp"
 
 namespace monosph {
@@ -18,8 +19,11 @@ class SphEquations : public Module<D> {
   void constitutive(Simulation<D>& sim) override;
   void forces(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
+  // With the fluid module on, fluid and wall particles are its business: only solids here.
+  void set_solids_only(bool on) { solids_only_ = on; }
 
  private:
+  bool solids_only_ = false;
   int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1, kas_ = -1;
   bool any_av_ = false, any_diffusion_ = false;
   // Per-particle scratch of the pair passes (stress factor, AV and diffusion parameters).

@@ -1,0 +1,318 @@
+#include "fluid_module.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "core/sph_equations.hpp"
+
+namespace monosph {
+
+namespace {
+
+// Smallest eigenvalue of a symmetric D x D matrix (the free-surface indicator lambda).
+template <int D>
+double min_eigenvalue(const Mat<D>& b) {
+  using M = Eigen::Matrix<double, D, D>;
+  const M s = 0.5 * (M(b) + M(b).transpose());
+  if constexpr (D == 2) {
+    const double t = 0.5 * s.trace(), det = s.determinant();
+    return t - std::sqrt(std::max(0.0, t * t - det));
+  } else {
+    Eigen::SelfAdjointEigenSolver<M> es;
+    es.computeDirect(s, Eigen::EigenvaluesOnly);
+    return es.eigenvalues().minCoeff();
+  }
+}
+
+}  // namespace
+
+template <int D>
+FluidModule<D>::FluidModule(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  kpw_ = p.add_field("wall_pressure", 1);        // Adami p_w of wall-like particles
+  kvw_ = p.add_field("wall_velocity", D);        // smoothed fluid velocity at wall-like particles
+  kgrad_ = p.add_field("density_gradient", D);   // renormalised <grad rho>^L of fluid particles
+  klam_ = p.add_field("free_surface", 1, FieldType::Real, true);  // lambda: ~1 inside, < 0.4 surface
+  kshift_ = p.add_field("shift_rate", D);        // delta-plus shift / dt
+  kff_ = p.add_field("fluid_force", D, FieldType::Real, true);  // force of the fluid on a wall-like particle
+  for (const auto& b : sim.bodies()) any_wall_ = any_wall_ || b.phase == kWall;
+  if (any_wall_) {
+    kaw_ = p.add_field("wall_acceleration", D);
+    kvprev_ = p.add_field("wall_previous_velocity", D);
+  }
+  for (const auto& m : sim.materials()) {
+    c0_.push_back(m.sound_speed());
+    rho0_.push_back(m.density);
+    nu_.push_back(m.viscosity / m.density);
+  }
+}
+
+template <int D>
+void FluidModule<D>::on_create(Simulation<D>& sim) {
+  if (kvprev_ < 0) return;
+  auto& p = sim.particles();
+  auto v = p.v();
+  auto vp = p.template view<Vec<D>>(kvprev_);
+  for (std::size_t i = 0; i < p.size(); ++i) vp[i] = v[i];
+}
+
+template <int D>
+void FluidModule<D>::sums(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  const auto& vol = sim.volumes();
+  const auto& mats = sim.materials();
+  auto ph = p.phase();
+  auto rho = p.rho();
+  auto pr = p.p();
+  auto v = p.v();
+  auto a = p.a();
+  auto mt = p.material();
+  auto pw = p.template view<double>(kpw_);
+  auto vw = p.template view<Vec<D>>(kvw_);
+  auto grad = p.template view<Vec<D>>(kgrad_);
+  auto lam = p.template view<double>(klam_);
+  std::span<Vec<D>> aw;
+  if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_);
+  const Vec<D> g = sim.body_force();
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (ph[i] == kFluid) pr[i] = mats[mt[i]].pressure(rho[i]);  // p = c0^2 (rho - rho0) (Sun Eq. 2)
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] == kFluid) {
+      Mat<D> bf = Mat<D>::Zero(), ba = Mat<D>::Zero();
+      Vec<D> graw = Vec<D>::Zero();
+      for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+        const int j = pl.j[k];
+        const Vec<D>& r = pl.r[k];
+        const double f = vol[j] * pl.f[k];
+        const Mat<D> rr = -f * (r * r.transpose());  // V_j (x_j - x_i) (x) grad_i W_ij
+        ba += rr;
+        if (ph[j] != kFluid) continue;
+        bf += rr;
+        graw += (rho[j] - rho[i]) * f * r;
+      }
+      // Renormalised density gradient over fluid neighbours (Antuono et al. 2010, equations.md
+      // 3.2); lambda over all neighbours, so that fluid next to a wall is not a free surface.
+      grad[i] = invert_correction<D>(bf) * graw;
+      lam[i] = min_eigenvalue<D>(ba);
+    } else {
+      // Adami et al. 2012, Eq. 27-28: p_w = [sum_f p_f W + (g - a_w) . sum_f rho_f r_wf W] / sum_f W.
+      double sw = 0, sp = 0;
+      Vec<D> srw = Vec<D>::Zero(), sv = Vec<D>::Zero();
+      for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+        const int j = pl.j[k];
+        if (ph[j] != kFluid) continue;
+        const double w = pl.w[k];
+        sw += w;
+        sp += pr[j] * w;
+        srw += (rho[j] * w) * pl.r[k];  // r_wf = x_w - x_f
+        sv += w * v[j];
+      }
+      if (sw > 0) {
+        // The wall's acceleration: prescribed motion (walls) or the last step's (solid, rigid).
+        const Vec<D> ai = ph[i] == kWall ? aw[i] : a[i];
+        pw[i] = (sp + (g - ai).dot(srw)) / sw;
+        vw[i] = sv / sw;
+      } else {
+        pw[i] = 0;
+        vw[i] = v[i];
+      }
+      lam[i] = 1;
+    }
+  }
+}
+
+template <int D>
+void FluidModule<D>::rates(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  const auto& vol = sim.volumes();
+  const auto& bodies = sim.bodies();
+  auto ph = p.phase();
+  auto rho = p.rho();
+  auto drho = p.drho();
+  auto v = p.v();
+  auto mt = p.material();
+  auto bd = p.body();
+  auto grad = p.template view<Vec<D>>(kgrad_);
+  const double h = sim.kernel().h();
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] == kWall) drho[i] = 0;
+    if (ph[i] != kFluid) continue;
+    const double delta = bodies[bd[i]].delta;
+    double div = 0, diff = 0;
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      const Vec<D>& r = pl.r[k];
+      const double f = pl.f[k], vj = vol[j];
+      div += vj * f * (v[j] - v[i]).dot(r);  // wall-like j: its own (body) velocity
+      if (delta > 0 && ph[j] == kFluid)
+        // psi_ji . grad_i W_ij with psi_ji = 2 (rho_j - rho_i) r_ji / r^2 - (<grad rho>_i +
+        // <grad rho>_j): zero for a linear density field (Antuono et al. 2012).
+        diff += vj * f * (-2.0 * (rho[j] - rho[i]) - (grad[i] + grad[j]).dot(r));
+    }
+    // Sun et al. 2017, Eq. 3: continuity with the delta-SPH diffusive term.
+    drho[i] = -rho[i] * div + delta * h * c0_[mt[i]] * diff;
+  }
+}
+
+template <int D>
+void FluidModule<D>::forces(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  const auto& vol = sim.volumes();
+  const auto& bodies = sim.bodies();
+  const auto& W = sim.kernel();
+  auto ph = p.phase();
+  auto rho = p.rho();
+  auto pr = p.p();
+  auto v = p.v();
+  auto a = p.a();
+  auto m = p.m();
+  auto mt = p.material();
+  auto bd = p.body();
+  auto pw = p.template view<double>(kpw_);
+  auto vw = p.template view<Vec<D>>(kvw_);
+  auto lam = p.template view<double>(klam_);
+  auto shift = p.template view<Vec<D>>(kshift_);
+  auto ff = p.template view<Vec<D>>(kff_);
+  const double h = W.h(), eta2 = 0.01 * h * h, wdp = W.w(sim.dp());
+  const double kvis = 2.0 * (D + 2);  // delta-SPH viscous term: alpha h c0 = 2 (d + 2) nu
+  const std::size_t n = p.size();
+  // Viscous coefficient 2(d + 2) nu + alpha h c0 of a fluid particle.
+  auto mu_of = [&](std::size_t i) {
+    return kvis * nu_[mt[i]] + bodies[bd[i]].av_alpha * h * c0_[mt[i]];
+  };
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] == kFluid) {
+      const BodyInfo& b = bodies[bd[i]];
+      const double mui = mu_of(i);
+      Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), sh = Vec<D>::Zero(), gl = Vec<D>::Zero();
+      for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+        const int j = pl.j[k];
+        const Vec<D>& r = pl.r[k];
+        const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij
+        const double vj = vol[j];
+        const bool fj = ph[j] == kFluid;
+        // Sun et al. 2017, Eq. 3: -(1/rho_i) sum_j (p_i + p_j) grad W V_j; a wall-like j enters
+        // with its extrapolated pressure and its own (geometric) volume (Adami et al. 2012).
+        ap -= ((pr[i] + (fj ? pr[j] : pw[j])) * vj) * gw;
+        if (fj || bodies[bd[j]].no_slip) {
+          // pi_ij = v_ij . r_ij / (r^2 + 0.01 h^2); at a no-slip wall v_j -> 2 v_w - v~_w.
+          const Vec<D> vjv = fj ? Vec<D>(v[j]) : Vec<D>(2.0 * v[j] - vw[j]);
+          const double mu = fj ? 0.5 * (mui + mu_of(j)) : mui;
+          av += (mu * vj * (v[i] - vjv).dot(r) / (r.squaredNorm() + eta2)) * gw;
+        }
+        if (b.shift_speed > 0) {
+          sh += (1.0 + b.shift_R * std::pow(pl.w[k] / wdp, b.shift_n)) * vj * gw;
+          if (fj) gl += (lam[j] - lam[i]) * vj * gw;
+        }
+      }
+      a[i] += ap / rho[i] + (rho0_[mt[i]] / rho[i]) * av;
+      // delta-plus shifting (Sun et al. 2017, Eq. 7-9): dr = -CFL Ma (2h)^2 sum[..] grad W V_j with
+      // CFL = c0 dt / h and Ma = U / c0, i.e. dr = -4 h U dt sum[..]; stored per unit dt.
+      Vec<D> s = Vec<D>::Zero();
+      if (b.shift_speed > 0 && lam[i] >= 0.4) {
+        s = -4.0 * h * b.shift_speed * sh;
+        if (lam[i] <= 0.75 && gl.squaredNorm() > 0) {  // near the surface: tangential part only
+          const Vec<D> nn = gl.normalized();
+          s -= s.dot(nn) * nn;
+        }
+      }
+      shift[i] = s;
+    } else {
+      // The reaction of every fluid-pair force above (exactly opposite): force on particle i.
+      Vec<D> f = Vec<D>::Zero();
+      const bool noslip = bodies[bd[i]].no_slip;
+      for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+        const int j = pl.j[k];
+        if (ph[j] != kFluid) continue;
+        const Vec<D>& r = pl.r[k];
+        const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij = -grad_j W_ji
+        const double vv = vol[i] * vol[j];
+        f -= ((pr[j] + pw[i]) * vv) * gw;
+        if (noslip) {
+          const Vec<D> viv = 2.0 * v[i] - vw[i];
+          f += (mu_of(j) * rho0_[mt[j]] * vv * (viv - v[j]).dot(r) / (r.squaredNorm() + eta2)) * gw;
+        }
+      }
+      ff[i] = f;
+      if (ph[i] == kWall)
+        a[i].setZero();  // walls move as prescribed (initial velocity, boundary conditions)
+      else
+        a[i] += f / m[i];
+    }
+  }
+}
+
+template <int D>
+void FluidModule<D>::drift(Simulation<D>& sim, double dt) {
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto x = p.x();
+  auto v = p.v();
+  auto shift = p.template view<Vec<D>>(kshift_);
+  const double cap = 0.1 * sim.dp();  // safety net, not part of Sun et al.: |dr| <= 0.1 dp
+  std::span<Vec<D>> aw, vp;
+  if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_), vp = p.template view<Vec<D>>(kvprev_);
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] == kFluid) {
+      Vec<D> d = dt * shift[i];
+      const double len = d.norm();
+      if (len > cap) d *= cap / len;
+      x[i] += d;
+    } else if (ph[i] == kWall) {  // centred difference of the prescribed velocity
+      aw[i] = (v[i] - vp[i]) / dt;
+      vp[i] = v[i];
+    }
+  }
+}
+
+template <int D>
+double FluidModule<D>::max_dt(Simulation<D>& sim) {
+  // Viscous limit dt <= 0.125 h^2 / nu (Morris et al. 1997); the acoustic and force limits are
+  // the core's (the fluid's wave speed is c0).
+  double nu = 0;
+  for (double x : nu_) nu = std::max(nu, x);
+  if (nu <= 0) return std::numeric_limits<double>::infinity();
+  const double h = sim.kernel().h();
+  return 0.125 * h * h / nu;
+}
+
+template <int D>
+std::vector<std::string> FluidModule<D>::probe_columns(const ProbeSpec& s) const {
+  if (s.type != "fluid_force") return {};
+  std::vector<std::string> c;
+  const char* ax = "xyz";
+  for (int a = 0; a < D; ++a) c.push_back(std::string("_") + ax[a]);
+  return c;
+}
+
+template <int D>
+void FluidModule<D>::probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<double>& out) {
+  // Total force of the fluid on the particles of `body` (all wall-like particles without one).
+  auto& p = sim.particles();
+  auto bd = p.body();
+  auto ff = p.template view<Vec<D>>(kff_);
+  auto ph = p.phase();
+  int body = -1;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b)
+    if (sim.bodies()[b].name == s.body) body = static_cast<int>(b);
+  Vec<D> f = Vec<D>::Zero();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (ph[i] != kFluid && (body < 0 || bd[i] == body)) f += ff[i];
+  for (int a = 0; a < D; ++a) out.push_back(f[a]);
+}
+
+template class FluidModule<2>;
+template class FluidModule<3>;
+
+}  // namespace monosph

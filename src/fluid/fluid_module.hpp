@@ -1,0 +1,40 @@
+#pragma once
+// Weakly compressible delta-plus SPH fluid (Sun, Colagrossi, Marrone & Zhang 2017) with the
+// generalised wall condition of Adami, Hu & Adams 2012 (equations: shared/reference/
+// equations.md, sections 3 and 4; docs/theory.md).
+//  - EOS p = c0^2 (rho - rho0) (Sun 2017, Eq. 2; c0 from the material's sound speed).
+//  - Continuity with the delta-SPH diffusive term and the renormalised density gradient
+//    (Antuono et al. 2010/2012), momentum with the symmetric pressure pair (p_i + p_j) and the
+//    delta-SPH viscous term 2(d + 2) nu rho0/rho_i pi_ij (Newtonian nu) plus optional alpha.
+//  - delta-plus particle shifting with free-surface detection (lambda, the smallest eigenvalue of
+//    the renormalisation matrix; no shift at the surface, tangential shift near it).
+//  - Every non-fluid particle (wall layers, and later solid and rigid particles) is a wall-like
+//    particle for the fluid: it gets an extrapolated pressure (with the wall acceleration term)
+//    and a smoothed fluid velocity (no-slip), and receives the opposite of the force it exerts.
+#include <vector>
+
+#include "core/simulation.hpp"
+
+namespace monosph {
+
+template <int D>
+class FluidModule : public Module<D> {
+ public:
+  explicit FluidModule(Simulation<D>& sim);
+  std::string name() const override { return "fluid"; }
+  void on_create(Simulation<D>& sim) override;
+  void sums(Simulation<D>& sim) override;
+  void rates(Simulation<D>& sim) override;
+  void drift(Simulation<D>& sim, double dt) override;
+  void forces(Simulation<D>& sim) override;
+  double max_dt(Simulation<D>& sim) override;
+  std::vector<std::string> probe_columns(const ProbeSpec& s) const override;
+  void probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<double>& out) override;
+
+ private:
+  int kpw_, kvw_, kgrad_, klam_, kshift_, kff_, kaw_ = -1, kvprev_ = -1;
+  std::vector<double> c0_, rho0_, nu_;  // per material
+  bool any_wall_ = false;
+};
+
+}  // namespace monosph
