@@ -51,6 +51,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
       items_.push_back(std::move(it));
       continue;
     }
+    if (s.type == "fluid_force")
+      throw InputError(where + ".type: 'fluid_force' needs the fluid module (a fluid body)");
     if (s.type.rfind("surface_", 0) == 0)
       throw InputError(where + ".type: '" + s.type +
                        "' needs the rigid module (a surfaces section)");

@@ -50,7 +50,8 @@ int Scene::material_index(const std::string& n) const {
 
 namespace {
 
-const std::vector<std::string> kModules = {"solid", "rigid", "fluid"};  // physics modules for scenes
+const std::vector<std::string> kModules = {"solid", "rigid",
+                                           "fluid"};  // physics modules for scenes
 
 void check_expression(const std::string& text, const std::string& path) {
   Expression e(text, path);
@@ -343,7 +344,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     if (!lib) {
       std::string names;
       for (const auto& k : library_material_names()) names += (names.empty() ? "" : ", ") + k;
-      scene_error(r.at("preset"), "no shipped material '" + preset + "' (available: " + names + ")");
+      scene_error(r.at("preset"),
+                  "no shipped material '" + preset + "' (available: " + names + ")");
     }
     m = *lib;
   }
@@ -356,8 +358,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     m.bulk_modulus = m.density * c * c;
     r.optional("bulk_modulus");
   } else {
-    m.bulk_modulus =
-        m.bulk_modulus > 0 ? r.positive("bulk_modulus", m.bulk_modulus) : r.positive("bulk_modulus");
+    m.bulk_modulus = m.bulk_modulus > 0 ? r.positive("bulk_modulus", m.bulk_modulus)
+                                        : r.positive("bulk_modulus");
     r.optional("sound_speed");
   }
   m.shear_modulus = r.non_negative("shear_modulus", m.shear_modulus);
@@ -380,7 +382,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     jc.T_ref = q.positive("reference_temperature", jc.T_ref);
     jc.T_melt = q.non_negative("melting_temperature", jc.T_melt);
     if (jc.T_melt > 0 && jc.T_melt <= jc.T_ref)
-      scene_error(q.at("melting_temperature"), "must exceed reference_temperature (or be 0: no thermal softening)");
+      scene_error(q.at("melting_temperature"),
+                  "must exceed reference_temperature (or be 0: no thermal softening)");
     q.finish();
   } else {
     r.optional("plasticity");
@@ -406,7 +409,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
     r.optional("damage");
   }
   if (m.damage.on && !m.plasticity.on)
-    scene_error(r.at("damage"), "Johnson-Cook damage grows with plastic strain: give `plasticity` too");
+    scene_error(r.at("damage"),
+                "Johnson-Cook damage grows with plastic strain: give `plasticity` too");
   if (m.plasticity.on && m.shear_modulus <= 0)
     scene_error(r.at("plasticity"), "needs a positive shear_modulus");
   r.finish();
@@ -608,7 +612,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         b.optional("shifting");
       }
       if (b.has("slip")) {
-        if (body.phase == "fluid") scene_error(p + ".slip", "applies to wall-like (non-fluid) bodies");
+        if (body.phase == "fluid")
+          scene_error(p + ".slip", "applies to wall-like (non-fluid) bodies");
         body.no_slip = b.choice("slip", {"no_slip", "free_slip"}) == "no_slip";
       } else {
         b.optional("slip");
@@ -754,10 +759,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     auto list = pr.node("list");
     if (!list.IsSequence()) scene_error("probes.list", "expected a list of probes");
     static const std::vector<std::string> types = {
-        "kinetic_energy", "elastic_energy", "disorder",      "total_mass", "momentum",
-        "abs_momentum",   "max_speed",      "min_distance",  "integral",   "mean",
-        "value_at",       "tracked",        "reaction_force", "surface_force", "surface_contacts",
-        "removed_mass", "field_max", "field_min", "extent", "surface_displacement"};
+        "kinetic_energy", "elastic_energy", "disorder",         "total_mass",
+        "momentum",       "abs_momentum",   "max_speed",        "min_distance",
+        "integral",       "mean",           "value_at",         "tracked",
+        "reaction_force", "surface_force",  "surface_contacts", "removed_mass",
+        "field_max",      "field_min",      "extent",           "surface_displacement",
+        "fluid_force"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);

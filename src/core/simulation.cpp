@@ -32,12 +32,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
       if (it == continua.end()) continua.push_back(b.continuum);
     }
     const Phase ph = b.phase == "fluid" ? kFluid : b.phase == "wall" ? kWall : kSolid;
-    BodyInfo info{b.name,     ph,
-                  b.material, b.av_alpha,
-                  b.av_beta,  b.as_epsilon,
-                  b.as_n,     b.delta,
-                  b.hg_xi,    b.hg_zeta,
-                  b.hg_chi,   b.hg_reference};
+    BodyInfo info{b.name, ph,      b.material, b.av_alpha, b.av_beta, b.as_epsilon,
+                  b.as_n, b.delta, b.hg_xi,    b.hg_zeta,  b.hg_chi,  b.hg_reference};
     info.corrected_divergence = b.corrected_divergence;
     info.hg_plastic_switch = b.hg_plastic_switch;
     info.temperature = b.temperature;

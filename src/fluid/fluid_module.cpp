@@ -29,12 +29,14 @@ double min_eigenvalue(const Mat<D>& b) {
 template <int D>
 FluidModule<D>::FluidModule(Simulation<D>& sim) {
   auto& p = sim.particles();
-  kpw_ = p.add_field("wall_pressure", 1);        // Adami p_w of wall-like particles
-  kvw_ = p.add_field("wall_velocity", D);        // smoothed fluid velocity at wall-like particles
-  kgrad_ = p.add_field("density_gradient", D);   // renormalised <grad rho>^L of fluid particles
-  klam_ = p.add_field("free_surface", 1, FieldType::Real, true);  // lambda: ~1 inside, < 0.4 surface
-  kshift_ = p.add_field("shift_rate", D);        // delta-plus shift / dt
-  kff_ = p.add_field("fluid_force", D, FieldType::Real, true);  // force of the fluid on a wall-like particle
+  kpw_ = p.add_field("wall_pressure", 1);       // Adami p_w of wall-like particles
+  kvw_ = p.add_field("wall_velocity", D);       // smoothed fluid velocity at wall-like particles
+  kgrad_ = p.add_field("density_gradient", D);  // renormalised <grad rho>^L of fluid particles
+  klam_ =
+      p.add_field("free_surface", 1, FieldType::Real, true);  // lambda: ~1 inside, < 0.4 surface
+  kshift_ = p.add_field("shift_rate", D);                     // delta-plus shift / dt
+  kff_ = p.add_field("fluid_force", D, FieldType::Real,
+                     true);  // force of the fluid on a wall-like particle
   for (const auto& b : sim.bodies()) any_wall_ = any_wall_ || b.phase == kWall;
   if (any_wall_) {
     kaw_ = p.add_field("wall_acceleration", D);
@@ -99,7 +101,8 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
       grad[i] = invert_correction<D>(bf) * graw;
       lam[i] = min_eigenvalue<D>(ba);
     } else {
-      // Adami et al. 2012, Eq. 27-28: p_w = [sum_f p_f W + (g - a_w) . sum_f rho_f r_wf W] / sum_f W.
+      // Adami et al. 2012, Eq. 27-28: p_w = [sum_f p_f W + (g - a_w) . sum_f rho_f r_wf W] / sum_f
+      // W.
       double sw = 0, sp = 0;
       Vec<D> srw = Vec<D>::Zero(), sv = Vec<D>::Zero();
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
@@ -193,7 +196,9 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
     if (ph[i] == kFluid) {
       const BodyInfo& b = bodies[bd[i]];
       const double mui = mu_of(i);
-      Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), sh = Vec<D>::Zero(), gl = Vec<D>::Zero();
+      Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), sh = Vec<D>::Zero(),
+             gl = Vec<D>::Zero();  // gl: sum V_j grad W
+      bool near_surface = lam[i] <= 0.75;
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         const Vec<D>& r = pl.r[k];
@@ -211,7 +216,8 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         }
         if (b.shift_speed > 0) {
           sh += (1.0 + b.shift_R * std::pow(pl.w[k] / wdp, b.shift_n)) * vj * gw;
-          if (fj) gl += (lam[j] - lam[i]) * vj * gw;
+          gl += vj * gw;  // towards the filled side (fluid and walls): minus the surface normal
+          near_surface = near_surface || (fj && lam[j] < 0.4);
         }
       }
       a[i] += ap / rho[i] + (rho0_[mt[i]] / rho[i]) * av;
@@ -220,7 +226,9 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
       Vec<D> s = Vec<D>::Zero();
       if (b.shift_speed > 0 && lam[i] >= 0.4) {
         s = -4.0 * h * b.shift_speed * sh;
-        if (lam[i] <= 0.75 && gl.squaredNorm() > 0) {  // near the surface: tangential part only
+        // Near the surface (lambda <= 0.75, or a neighbour of a surface particle): tangential part
+        // only, so that no particle is pushed through the surface (or up a wall).
+        if (near_surface && gl.squaredNorm() > 0) {
           const Vec<D> nn = gl.normalized();
           s -= s.dot(nn) * nn;
         }

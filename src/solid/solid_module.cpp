@@ -426,16 +426,16 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       // Pair modulus: symmetric so that the pair forces stay equal and opposite.
       const double Eij = sw ? 0.5 * (Ei + (ep[j] > 0 ? sy[j] : E)) : E;
       const double kw = vol[j] * w * Eij, inv = 1.0 / (X2 * r2);  // one division per pair
-      kappa += kw * r2 * inv;                                         // k_ij = kw / X2
+      kappa += kw * r2 * inv;                                     // k_ij = kw / X2
       f += (kstiff * kw * ed * inv) * d;
       // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).
       if (kvisc != 0) {
         const double vr = (v[j] - v[i]).dot(d);
         if (vr * ed < 0) {
           const double rbar = 0.5 * (rho[i] + rho[j]);
-          f +=
-              (kvisc * m[j] / rbar * std::sqrt(eps.squaredNorm() * r2 * inv) * vr / (r2 + eta2) * pf[k]) *
-              d;
+          f += (kvisc * m[j] / rbar * std::sqrt(eps.squaredNorm() * r2 * inv) * vr / (r2 + eta2) *
+                pf[k]) *
+               d;
         }
       }
     }

@@ -17,10 +17,9 @@ namespace {
 // along x when not `box`. `fluid` and `top` add body keys and scene keys.
 Scene tank(bool box, double height, const std::string& fluid, const std::string& top,
            double jitter = 0.0) {
-  const std::string walls =
-      box ? "difference: [{box: {min: [-0.03, -0.03], max: [0.33, 0.4]}}, "
-            "{box: {min: [0, 0], max: [0.3, 0.4]}}]"
-          : "box: {min: [0, -0.03], max: [0.3, 0]}";
+  const std::string walls = box ? "difference: [{box: {min: [-0.03, -0.03], max: [0.33, 0.4]}}, "
+                                  "{box: {min: [0, 0], max: [0.3, 0.4]}}]"
+                                : "box: {min: [0, -0.03], max: [0.3, 0]}";
   const std::string dom = box ? "{min: [-0.03, -0.03], max: [0.33, 0.4]}"
                               : "{min: [0, -0.03], max: [0.3, 0.4], periodic: [x]}";
   return load_scene_text(fmt::format(R"(
@@ -72,9 +71,8 @@ TEST(Fluid, FluidOnlySceneCarriesNoSolidFields) {
 TEST(Fluid, PairForcesWithWallsConserveMomentum) {
   // Random velocities and densities, no gravity: the sum of fluid forces and the reactions on the
   // wall particles vanishes (pressure and no-slip viscosity, each pair exactly opposite).
-  auto sim = build<2>(tank(true, 0.2,
-                           "    artificial_viscosity: {alpha: 0.1}\n    shifting: {speed: 1}", "",
-                           0.2));
+  auto sim = build<2>(
+      tank(true, 0.2, "    artificial_viscosity: {alpha: 0.1}\n    shifting: {speed: 1}", "", 0.2));
   auto& p = sim->particles();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
