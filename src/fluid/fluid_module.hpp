@@ -5,7 +5,7 @@
 //  - EOS p = c0^2 (rho - rho0) (Sun 2017, Eq. 2; c0 from the material's sound speed).
 //  - Continuity with the delta-SPH diffusive term and the renormalised density gradient
 //    (Antuono et al. 2010/2012), momentum with the symmetric pressure pair (p_i + p_j) and the
-//    delta-SPH viscous term 2(d + 2) nu rho0/rho_i pi_ij (Newtonian nu) plus optional alpha.
+//    Morris et al. 1997 viscous term (Newtonian nu) plus the delta-SPH alpha term (optional).
 //  - delta-plus particle shifting with free-surface detection (lambda, the smallest eigenvalue of
 //    the renormalisation matrix; no shift at the surface, tangential shift near it).
 //  - Every non-fluid particle (wall layers, and later solid and rigid particles) is a wall-like
