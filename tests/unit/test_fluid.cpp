@@ -223,3 +223,67 @@ TEST(Fluid, NoShiftAcrossAFreeSurface) {
   }
   EXPECT_GT(surface, 20);
 }
+
+TEST(Fluid, ResultsDoNotDependOnThreadCount) {
+  // Fluid with diffusion, viscosity and shifting over a moving no-slip wall, under gravity.
+  Scene s = tank(true, 0.2,
+                 "    density_diffusion: {delta: 0.1}\n    artificial_viscosity: {alpha: 0.05}\n"
+                 "    shifting: {speed: 1}",
+                 "body_force: [0, -9.81]", 0.2);
+  const int before = omp_get_max_threads();
+  auto run = [&](int threads) {
+    omp_set_num_threads(threads);
+    auto sim = build<2>(s);
+    sim->init();
+    for (int k = 0; k < 100; ++k) sim->advance();
+    return sim;
+  };
+  auto a = run(1);
+  auto b = run(2);
+  omp_set_num_threads(before);
+  auto& pa = a->particles();
+  auto& pb = b->particles();
+  ASSERT_EQ(pa.size(), pb.size());
+  EXPECT_EQ(a->time(), b->time());
+  for (std::size_t k = 0; k < pa.fields().size(); ++k) {
+    EXPECT_EQ(pa.fields()[k].real, pb.fields()[k].real) << pa.fields()[k].name;
+    EXPECT_EQ(pa.fields()[k].ints, pb.fields()[k].ints) << pa.fields()[k].name;
+  }
+}
+
+TEST(Fluid, CouetteFlowBetweenAFixedAndAMovingNoSlipWall) {
+  // Periodic channel H = 1, nu = 1, top wall moving at U = 1 (Adami no-slip with the wall's own
+  // velocity): after t = 1 (the slowest mode decays as exp(-pi^2 nu t / H^2) = 5e-5) the profile
+  // is u = U y / H.
+  Scene s = load_scene_text(R"(
+name: couette
+dimension: 2
+dp: 0.05
+domain: {min: [0, -0.15], max: [0.5, 1.15], periodic: [x]}
+materials:
+  fluid: {density: 1, sound_speed: 10, viscosity: 1}
+bodies:
+  - {name: fluid, phase: fluid, material: fluid, shape: {box: {min: [0, 0], max: [0.5, 1]}},
+     density_diffusion: {delta: 0.1}}
+  - {name: bottom, phase: wall, material: fluid, shape: {box: {min: [0, -0.15], max: [0.5, 0]}}}
+  - {name: top, phase: wall, material: fluid, shape: {box: {min: [0, 1], max: [0.5, 1.15]}},
+     initial: {velocity: ["1", "0"]}}
+end_time: 1
+)");
+  auto sim = build<2>(s);
+  sim->init();
+  while (sim->time() < 1.0) sim->advance(1.0);
+  auto& p = sim->particles();
+  double err2 = 0, ref2 = 0, vy = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.phase()[i] == kWall) {
+      EXPECT_EQ(p.v()[i][0], p.x()[i][1] > 0.5 ? 1.0 : 0.0);  // walls keep their velocity
+      continue;
+    }
+    const double u = p.x()[i][1];
+    err2 += std::pow(p.v()[i][0] - u, 2), ref2 += u * u;
+    vy = std::max(vy, std::abs(p.v()[i][1]));
+  }
+  EXPECT_LT(std::sqrt(err2 / ref2), 0.02);
+  EXPECT_LT(vy, 0.01);
+}
