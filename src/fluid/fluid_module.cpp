@@ -145,8 +145,7 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (ph[i] == kWall) drho[i] = 0;
-    if (ph[i] != kFluid) continue;
+    if (ph[i] != kFluid) continue;  // walls keep drho = 0 (nothing writes it)
     const double delta = bodies[bd[i]].delta;
     double div = 0, diff = 0;
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {

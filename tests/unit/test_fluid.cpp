@@ -2,12 +2,12 @@
 // shifting and free-surface detection.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <random>
 
 #include "assemble.hpp"
 #include "core/scene_reader.hpp"
+#include "thread_helpers.hpp"
 
 using namespace monosph;
 
@@ -55,10 +55,6 @@ std::unique_ptr<Simulation<D>> build(const Scene& s) {
   return sim;
 }
 
-Vec<2> field2(Particles<2>& p, const char* name, std::size_t i) {
-  return p.view<Vec<2>>(name)[i];
-}
-
 }  // namespace
 
 TEST(Fluid, FluidOnlySceneCarriesNoSolidFields) {
@@ -88,7 +84,7 @@ TEST(Fluid, PairForcesWithWallsConserveMomentum) {
   double scale = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec<2> fi =
-        p.phase()[i] == kFluid ? Vec<2>(p.m()[i] * p.a()[i]) : field2(p, "fluid_force", i);
+        p.phase()[i] == kFluid ? Vec<2>(p.m()[i] * p.a()[i]) : p.view<Vec<2>>("fluid_force")[i];
     f += fi;
     scale += fi.norm();
   }
@@ -225,30 +221,18 @@ TEST(Fluid, NoShiftAcrossAFreeSurface) {
 }
 
 TEST(Fluid, ResultsDoNotDependOnThreadCount) {
-  // Fluid with diffusion, viscosity and shifting over a moving no-slip wall, under gravity.
+  // Fluid with diffusion, viscosity and shifting in a tank of no-slip walls, under gravity.
   Scene s = tank(true, 0.2,
                  "    density_diffusion: {delta: 0.1}\n    artificial_viscosity: {alpha: 0.05}\n"
                  "    shifting: {speed: 1}",
                  "body_force: [0, -9.81]", 0.2);
-  const int before = omp_get_max_threads();
-  auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    auto sim = build<2>(s);
-    sim->init();
-    for (int k = 0; k < 100; ++k) sim->advance();
-    return sim;
-  };
-  auto a = run(1);
-  auto b = run(2);
-  omp_set_num_threads(before);
-  auto& pa = a->particles();
-  auto& pb = b->particles();
-  ASSERT_EQ(pa.size(), pb.size());
-  EXPECT_EQ(a->time(), b->time());
-  for (std::size_t k = 0; k < pa.fields().size(); ++k) {
-    EXPECT_EQ(pa.fields()[k].real, pb.fields()[k].real) << pa.fields()[k].name;
-    EXPECT_EQ(pa.fields()[k].ints, pb.fields()[k].ints) << pa.fields()[k].name;
-  }
+  test::expect_thread_independent<2>(
+      [&] {
+        auto sim = build<2>(s);
+        sim->init();
+        return sim;
+      },
+      100);
 }
 
 TEST(Fluid, CouetteFlowBetweenAFixedAndAMovingNoSlipWall) {

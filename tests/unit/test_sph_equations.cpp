@@ -6,6 +6,7 @@
 
 #include "core/sph_equations.hpp"
 #include "scene_helpers.hpp"
+#include "thread_helpers.hpp"
 
 using namespace monosph;
 
@@ -78,22 +79,5 @@ TEST(SphEquations, UniformPressureGivesNoForceInTheInterior) {
 
 TEST(SphEquations, ResultsDoNotDependOnThreadCount) {
   Scene s = test::box_scene(2, 0.01, 0.3, 0.2, 0, "x, y", 0.25, kAV);
-  const int before = omp_get_max_threads();
-  auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    auto sim = make<2>(s, 1.0, 9);
-    for (int k = 0; k < 100; ++k) sim->advance();
-    return sim;
-  };
-  auto a = run(1);
-  auto b = run(2);
-  omp_set_num_threads(before);
-  auto& pa = a->particles();
-  auto& pb = b->particles();
-  ASSERT_EQ(pa.size(), pb.size());
-  EXPECT_EQ(a->time(), b->time());
-  for (std::size_t k = 0; k < pa.fields().size(); ++k) {
-    EXPECT_EQ(pa.fields()[k].real, pb.fields()[k].real) << pa.fields()[k].name;
-    EXPECT_EQ(pa.fields()[k].ints, pb.fields()[k].ints) << pa.fields()[k].name;
-  }
+  test::expect_thread_independent<2>([&] { return make<2>(s, 1.0, 9); }, 100);
 }
