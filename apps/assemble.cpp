@@ -3,7 +3,9 @@
 #include <algorithm>
 
 #include "core/sph_equations.hpp"
+#include "coupling/contact_module.hpp"
 #include "fluid/fluid_module.hpp"
+#include "rigid/cluster_module.hpp"
 #include "rigid/rigid_surface_module.hpp"
 #include "solid/solid_module.hpp"
 
@@ -22,12 +24,18 @@ void assemble_modules(Simulation<D>& sim) {
                                      [](const BodyInfo& b) { return b.phase == kSolid; });
   if (any_solid || !enabled("fluid")) {
     auto sph = std::make_unique<SphEquations<D>>(sim, enabled("solid"));
-    sph->set_solids_only(enabled("fluid"));
+    // Rigid-cluster particles move with their cluster: no SPH equations for them.
+    const bool any_rigid = std::any_of(sim.bodies().begin(), sim.bodies().end(),
+                                       [](const BodyInfo& b) { return b.phase == kRigid; });
+    sph->set_solids_only(enabled("fluid") || any_rigid);
     sim.add_module(std::move(sph));
   }
   if (enabled("fluid")) sim.add_module(std::make_unique<FluidModule<D>>(sim));
   if (enabled("solid")) sim.add_module(std::make_unique<SolidModule<D>>(sim));
   if (enabled("rigid")) sim.add_module(std::make_unique<RigidSurfaceModule<D>>(sim));
+  if (enabled("contact")) sim.add_module(std::make_unique<ContactModule<D>>(sim));
+  // Last: it sums every force its particles received (fluid, contact, surfaces, body force).
+  if (enabled("clusters")) sim.add_module(std::make_unique<ClusterModule<D>>(sim));
 }
 
 template void assemble_modules<2>(Simulation<2>&);

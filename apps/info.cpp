@@ -22,7 +22,10 @@ int info_impl(const Scene& scene) {
   for (std::size_t b = 0; b < count.size(); ++b) {
     const auto& bi = sim.bodies()[b];
     fmt::print("body       {:<16} {:<6} material {:<12} {:>10} particles\n", bi.name,
-               bi.phase == kFluid ? "fluid" : bi.phase == kWall ? "wall" : "solid", scene.materials[bi.material].name, count[b]);
+               bi.phase == kFluid  ? "fluid"
+               : bi.phase == kWall ? "wall"
+                                   : "solid",
+               scene.materials[bi.material].name, count[b]);
   }
   fmt::print("total      {} particles\n", p.size());
   std::string mods;

@@ -101,6 +101,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     next_output = get("next_output", 0);
     next_probe = get("next_probe", 0);
     next_ckpt = get("next_checkpoint", scene.checkpoint_every);
+    for (const auto& m : sim.modules()) m->load_state(sim, restart_meta->scalars);
     sim.init(true);
   } else {
     sim.create_particles();
@@ -179,6 +180,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     meta.scalars["next_output"] = next_output;
     meta.scalars["next_probe"] = next_probe;
     meta.scalars["next_checkpoint"] = next_ckpt;
+    for (const auto& m : sim.modules()) m->save_state(meta.scalars);
     write_checkpoint<D>(file, p, meta);
   };
 

@@ -12,7 +12,7 @@ namespace monosph {
 template <int D>
 struct Probes<D>::Item {
   ProbeSpec spec;
-  int field = -1, body = -1, bc = -1;
+  int field = -1, body = -1, bc = -1, target = -1;
   std::int64_t id = -1;  // tracked particle
   Expression weight;
   Module<D>* module = nullptr;  // provides the values of a module's probe type
@@ -63,6 +63,10 @@ Probes<D>::Probes(Simulation<D>& sim) {
       for (std::size_t b = 0; b < sim.bodies().size(); ++b)
         if (sim.bodies()[b].name == s.body) it->body = static_cast<int>(b);
     }
+    for (std::size_t b = 0; b < sim.bodies().size(); ++b)
+      if (!s.target.empty() && sim.bodies()[b].name == s.target) it->target = static_cast<int>(b);
+    if (s.type == "grain_impacts" || s.type == "contact_pairs")
+      throw InputError(where + ".type: '" + s.type + "' needs the contact module (a rigid body)");
     if (s.type == "disorder" && !p.has("disorder"))
       throw InputError(where +
                        ".type: 'disorder' needs a solid body (the solid module computes it)");
@@ -215,6 +219,24 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       out.push_back(sum);
     } else if (s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) out.push_back(sim.reactions()[it->bc][a]);
+    } else if (s.type == "penetration") {
+      // How far a particle of `body` comes closer than dp to a particle of `target` (every solid
+      // particle without one): max(0, dp - r) over such pairs, in metres. Lattice neighbours at
+      // rest are dp apart (0); a Hertz overlap or a fluid particle pushed into the solid shows.
+      const auto& pl = sim.pairs();
+      auto ph = p.phase();
+      const double dp = sim.dp();
+      double worst = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i)) continue;
+        for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+          const int j = pl.j[k];
+          if (it->target < 0 ? ph[j] != kSolid : bd[j] != it->target) continue;
+          if (bd[j] == bd[i]) continue;
+          worst = std::max(worst, dp - pl.r[k].norm());
+        }
+      }
+      out.push_back(worst);
     }
   }
   return out;

@@ -31,11 +31,16 @@ std::optional<Material> library_material(const std::string& name) {
     m.damage = {true, -1.751, 2.32, -0.773, -0.0491, 0.38};
     return m;
   }
+  if (name == "iron") {  // pure iron (handbook): E = 211 GPa, nu = 0.29 -> K, mu; abrasive grains
+    const double e = 211e9, nu = 0.29;
+    m.density = 7870, m.bulk_modulus = e / (3 * (1 - 2 * nu)), m.shear_modulus = e / (2 * (1 + nu));
+    return m;
+  }
   return std::nullopt;
 }
 
 std::vector<std::string> library_material_names() {
-  return {"Al6061-T6", "PMMA"};
+  return {"Al6061-T6", "PMMA", "iron"};
 }
 
 double Material::wave_speed() const {
@@ -50,8 +55,8 @@ int Scene::material_index(const std::string& n) const {
 
 namespace {
 
-const std::vector<std::string> kModules = {"solid", "rigid",
-                                           "fluid"};  // physics modules for scenes
+// Physics modules for scenes (switched on by the bodies and surfaces that need them).
+const std::vector<std::string> kModules = {"solid", "rigid", "fluid", "clusters", "contact"};
 
 void check_expression(const std::string& text, const std::string& path) {
   Expression e(text, path);
@@ -499,8 +504,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     for (const auto& m : r.strings("modules")) {
       if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
         scene_error("modules", "unknown module '" + m +
-                                   "' (available: solid, rigid, fluid; they are switched on by "
-                                   "the bodies and surfaces that need them)");
+                                   "' (available: solid, rigid, fluid, clusters, contact; they are "
+                                   "switched on by the bodies and surfaces that need them)");
       s.modules.push_back(m);
     }
   } else {
@@ -519,7 +524,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
       for (const auto& other : s.bodies)
         if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
-      body.phase = b.choice("phase", {"fluid", "solid", "wall"});
+      body.phase = b.choice("phase", {"fluid", "solid", "wall", "rigid"});
       body.continuum = b.text("continuum", body.name);
       std::string mat = b.text("material");
       body.material = s.material_index(mat);
@@ -549,6 +554,14 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
           body.velocity_expr = velocity_profile(in, dim);
         else
           in.optional("velocity_profile");
+        if (in.has("angular_velocity")) {  // rigid clusters: about each cluster's centre of mass
+          if (body.phase != "rigid")
+            scene_error(in.at("angular_velocity"), "applies to rigid bodies only");
+          body.angular_velocity =
+              dim == 2 ? Point{in.number("angular_velocity")} : in.vector("angular_velocity", 3);
+        } else {
+          in.optional("angular_velocity");
+        }
         in.finish();
       } else {
         b.optional("initial");
@@ -618,6 +631,19 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("slip");
       }
+      if (b.has("body_force"))  // replaces the scene's body_force for this body
+        body.body_force = b.vector("body_force", dim);
+      else
+        b.optional("body_force");
+      body.fill_rest = b.choice("fill", {"all", "rest"}, "all") == "rest";
+      if (b.has("clusters")) {
+        if (body.phase != "rigid") scene_error(p + ".clusters", "applies to rigid bodies only");
+        body.cluster_per_part = b.choice("clusters", {"one", "per_part"}) == "per_part";
+        if (body.cluster_per_part && body.shape.kind != Shape::Kind::Union)
+          scene_error(p + ".clusters", "per_part needs a shape that is a union of parts");
+      } else {
+        b.optional("clusters");
+      }
       if (b.has("erosion")) {
         if (body.phase != "solid") scene_error(p + ".erosion", "applies to solid bodies only");
         const std::string e = b.choice("erosion", {"none", "failed", "failed_surface"});
@@ -653,6 +679,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       if ((body.phase == "fluid" || body.phase == "wall") &&
           std::find(s.modules.begin(), s.modules.end(), "fluid") == s.modules.end())
         s.modules.push_back("fluid");
+    // Rigid bodies are clusters, in contact with the other bodies (Cleary-type contact).
+    for (const char* m : {"clusters", "contact"})
+      for (const auto& body : s.bodies)
+        if (body.phase == "rigid" &&
+            std::find(s.modules.begin(), s.modules.end(), m) == s.modules.end())
+          s.modules.push_back(m);
     // A solid body needs the solid module: switch it on.
     for (const auto& body : s.bodies)
       if (body.phase == "solid" &&
@@ -712,6 +744,25 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     r.optional("surfaces");
   }
 
+  if (r.has("contact")) {  // rigid-cluster contact (equations.md Sect. 6)
+    MapReader c(r.node("contact"), "contact");
+    s.contact.law = c.choice("law", {"hertz", "lennard_jones"}, "hertz");
+    s.contact.distance = c.positive("distance", 1.0);
+    s.contact.damping = c.non_negative("damping", 0.0);
+    if (s.contact.law == "lennard_jones") {
+      s.contact.strength = c.positive("strength");
+      s.contact.p1 = c.positive("p1", 12.0);
+      s.contact.p2 = c.positive("p2", 4.0);
+      if (!(s.contact.p1 > s.contact.p2)) scene_error("contact.p1", "must exceed contact.p2");
+    } else {
+      for (const char* k : {"strength", "p1", "p2"})
+        if (c.has(k)) scene_error(std::string("contact.") + k, "applies to law lennard_jones only");
+    }
+    c.finish();
+  } else {
+    r.optional("contact");
+  }
+
   s.body_force = r.has("body_force") ? r.vector("body_force", dim)
                                      : (r.optional("body_force"), Point(dim, 0.0));
   s.end_time = r.positive("end_time");
@@ -764,7 +815,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "integral",       "mean",           "value_at",         "tracked",
         "reaction_force", "surface_force",  "surface_contacts", "removed_mass",
         "field_max",      "field_min",      "extent",           "surface_displacement",
-        "fluid_force"};
+        "fluid_force",    "penetration",    "grain_impacts",    "contact_pairs"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -795,6 +846,14 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         ps.body = q.text("surface");
       }
       if (ps.body.empty()) ps.body = q.text("body", "");
+      if (ps.type == "penetration") {
+        ps.target = q.text("target", "");
+        bool found = ps.target.empty();
+        for (const auto& body : s.bodies) found = found || body.name == ps.target;
+        if (!found) scene_error(p + ".target", "no body named '" + ps.target + "'");
+      } else {
+        q.optional("target");
+      }
       if (ps.type == "value_at" || ps.type == "tracked")
         ps.point = q.vector("point", dim);
       else

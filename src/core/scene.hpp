@@ -86,8 +86,23 @@ struct BodySpec {
   // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),
   // the anti-clustering term R (W_ij / W(dp))^n.
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
-  bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
-  int erosion = 0;                 // remove particles with D >= 1: 0 never, 1 all, 2 surface only
+  bool no_slip = true;     // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
+  int erosion = 0;         // remove particles with D >= 1: 0 never, 1 all, 2 surface only
+  Point body_force;        // replaces the scene's body_force when given
+  bool fill_rest = false;  // takes only the lattice nodes no other body takes
+  bool cluster_per_part = false;  // rigid: one cluster per part of a union shape (else one)
+  Point angular_velocity;         // rigid: initial (2D: one value; 3D: a vector)
+};
+
+// Contact between rigid-cluster particles and other bodies' particles (substitute for the law of
+// Cleary et al. 2012; ../shared/reference/equations.md Sect. 6): spheres of diameter
+// `distance` dp, Hertz (default) or Lennard-Jones-type (Monaghan 1994).
+struct ContactSpec {
+  std::string law = "hertz";  // hertz | lennard_jones
+  double distance = 1.0;      // contact diameter, fraction of dp
+  double damping = 0;         // hertz: normal dashpot, ratio of critical
+  double strength = 0;        // lennard_jones: D (m^2/s^2)
+  double p1 = 12, p2 = 4;     // lennard_jones exponents
 };
 
 struct BoundarySpec {
@@ -118,6 +133,7 @@ struct SurfaceSpec {
 
 struct ProbeSpec {
   std::string name, type, field, weight_expr, body;
+  std::string target;  // penetration: the body penetrated (empty: every solid particle)
   int component = -1;
   Point point;
 };
@@ -141,6 +157,7 @@ struct Scene {
   std::vector<BodySpec> bodies;
   std::vector<BoundarySpec> boundaries;
   std::vector<SurfaceSpec> surfaces;  // rigid surfaces (section `surfaces`)
+  ContactSpec contact;                // section `contact`
   std::vector<std::string> modules;
   Point body_force;
   double end_time = 0;

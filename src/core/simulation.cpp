@@ -25,13 +25,16 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
   std::vector<std::string> continua;
   for (const auto& b : scene_.bodies) {
-    int g = b.phase == "fluid" ? -1 : -2;
+    int g = b.phase == "fluid" ? -1 : b.phase == "rigid" ? -3 : -2;
     if (b.phase == "solid") {
       auto it = std::find(continua.begin(), continua.end(), b.continuum);
       g = static_cast<int>(it - continua.begin());
       if (it == continua.end()) continua.push_back(b.continuum);
     }
-    const Phase ph = b.phase == "fluid" ? kFluid : b.phase == "wall" ? kWall : kSolid;
+    const Phase ph = b.phase == "fluid"   ? kFluid
+                     : b.phase == "wall"  ? kWall
+                     : b.phase == "rigid" ? kRigid
+                                          : kSolid;
     BodyInfo info{b.name, ph,      b.material, b.av_alpha, b.av_beta, b.as_epsilon,
                   b.as_n, b.delta, b.hg_xi,    b.hg_zeta,  b.hg_chi,  b.hg_reference};
     info.corrected_divergence = b.corrected_divergence;
@@ -41,11 +44,14 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     info.group = g;
     info.shift_speed = b.shift_speed, info.shift_R = b.shift_R, info.shift_n = b.shift_n;
     info.no_slip = b.no_slip;
+    const Point& bf = b.body_force.empty() ? scene_.body_force : b.body_force;
+    for (int a = 0; a < D; ++a) info.body_force[a] = bf[a];
     bodies_.push_back(std::move(info));
   }
   removed_mass_.assign(bodies_.size(), 0.0);
   if (scene_.newmark_gamma != 0.5) kaprev_ = p_.add_field("previous_acceleration", D);
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
+  for (const auto& b : bodies_) gb_.push_back(Eigen::Map<const V>(b.body_force.data()));
   for (const auto& m : scene_.materials) wave_speed_.push_back(m.wave_speed());
   if (!scene_.boundaries.empty()) {
     kbc_ = p_.add_field("boundary", 1, FieldType::Int, false);
@@ -65,8 +71,13 @@ template <int D>
 void Simulation<D>::create_particles() {
   const double dp = scene_.dp;
   // Global lattice: nodes at domain.min + (k + 1/2) dp. Later bodies may not overlap earlier ones.
+  // Bodies with `fill: rest` come last and take only the nodes no other body took.
   std::unordered_map<std::int64_t, int> node_owner;
-  for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+  std::vector<std::size_t> order;
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t b = 0; b < scene_.bodies.size(); ++b)
+      if (scene_.bodies[b].fill_rest == (pass == 1)) order.push_back(b);
+  for (std::size_t b : order) {
     const BodySpec& body = scene_.bodies[b];
     Point lo, hi;
     body.shape.bounds(lo, hi);
@@ -91,15 +102,18 @@ void Simulation<D>::create_particles() {
       }
       if (body.shape.contains(x)) {
         auto [it, fresh] = node_owner.emplace(key, static_cast<int>(b));
-        if (!fresh) {
+        if (!fresh && body.fill_rest) {
+          // taken by another body: skip
+        } else if (!fresh) {
           std::ostringstream os;
           os << "bodies[" << b << "] (" << body.name << ").shape: overlaps body '"
              << scene_.bodies[it->second].name << "' at (";
           for (int a = 0; a < D; ++a) os << (a ? ", " : "") << x[a];
           os << ")";
           throw InputError(os.str());
+        } else {
+          pts.push_back(x);
         }
-        pts.push_back(x);
       }
       int a = 0;
       while (a < D && ++k[a] > k1[a]) k[a] = k0[a], ++a;
@@ -246,6 +260,7 @@ void Simulation<D>::kick(double h, double t_bc) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) v[i] += h * a[i];
   apply_bc_velocity(t_bc);
+  for (auto& m : modules_) m->kicked(*this, h);
 }
 
 template <int D>
@@ -263,6 +278,7 @@ void Simulation<D>::newmark_kick(double dt) {
     ap[i] = a[i];
   }
   apply_bc_velocity(t_);
+  for (auto& m : modules_) m->kicked(*this, 0.5 * dt);
 }
 
 template <int D>
@@ -366,9 +382,10 @@ void Simulation<D>::compute_forces() {
   for (auto& m : modules_) m->sums(*this);
   for (auto& m : modules_) m->constitutive(*this);
   auto a = p_.a();
+  auto bd = p_.body();
   const std::size_t n = p_.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) a[i] = g_;
+  for (std::size_t i = 0; i < n; ++i) a[i] = gb_[bd[i]];
   for (auto& m : modules_) m->forces(*this);
   if (kbc_ >= 0) {  // reaction of each constrained set: what holds it on its prescribed path
     auto bc = p_.template view<std::int64_t>(kbc_);
@@ -384,13 +401,15 @@ double Simulation<D>::compute_dt() {
   auto v = p_.v();
   auto a = p_.a();
   auto mt = p_.material();
+  auto ph = p_.phase();
   const std::size_t n = p_.size();
   const double h = kernel_.h();
   const auto& c = wave_speed_;
   double dt_ac = std::numeric_limits<double>::infinity(), dt_f = dt_ac;
 #pragma omp parallel for reduction(min : dt_ac, dt_f) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    dt_ac = std::min(dt_ac, h / (c[mt[i]] + v[i].norm()));
+    // Rigid-cluster particles carry no waves: only their speed counts.
+    dt_ac = std::min(dt_ac, h / ((ph[i] == kRigid ? 0.0 : c[mt[i]]) + v[i].norm()));
     const double an = a[i].norm();
     if (an > 0) dt_f = std::min(dt_f, std::sqrt(h / an));
   }

@@ -1,6 +1,7 @@
 #pragma once
 // Simulation<D>: the particle container, neighbours, modules and the kick-drift-kick integrator.
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ class Module {
   virtual void before_rebuild(Simulation<D>&) {}    // a rebuild follows (old list valid)
   virtual void diagnostics(Simulation<D>&) {}       // fields for output and probes only
   virtual void on_rebuild(Simulation<D>&) {}        // after a neighbour-list rebuild
+  virtual void kicked(Simulation<D>&, double h) {}  // after every (half) kick of length h
+  // Module state that is not a particle field, for checkpoints ("<module>.<key>" -> value).
+  virtual void save_state(std::map<std::string, double>&) const {}
+  virtual void load_state(Simulation<D>&, const std::map<std::string, double>&) {}
   virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
   // Probe types a module provides (e.g. "surface_force"): the column suffixes of `spec` ("_x",
   // "_y"... or ""), empty when the type is not this module's; `probe` appends one value per column.
@@ -67,7 +72,9 @@ struct BodyInfo {
   int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)
   bool no_slip = true;                                 // wall-like body seen by the fluid
-  int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls)
+  int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls,
+                  // -3 rigid)
+  std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)
 };
 
 template <int D>
@@ -107,6 +114,8 @@ class Simulation {
   long step() const { return step_; }
   double dp() const { return scene_.dp; }
   const V& body_force() const { return g_; }
+  // The body force of body b (the scene's, or the body's own `body_force`).
+  V body_force(int b) const { return gb_[b]; }
   void set_state(double t, long step, double dt) { t_ = t, step_ = step, dt_ = dt; }
 
   // Smallest pair distance seen in the last force pass (set by the pair-force module).
@@ -154,6 +163,7 @@ class Simulation {
   std::vector<double> removed_mass_;  // per body
   int kbc_ = -1;  // field "boundary" (1 + index of the boundary condition, 0 = free)
   V g_;
+  std::vector<V> gb_;  // per body
   double t_ = 0, dt_ = 0, dt0_ = 0;
   long step_ = 0;
   double min_r_ = 0;

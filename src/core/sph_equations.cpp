@@ -192,7 +192,8 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
       wpair_[i] = m[i];
     }
     if (any_av_) {
-      cs_[i] = mats[mt[i]].sound_speed();
+      // Particles these equations skip do not limit the step (cs = 0: h/0 = inf).
+      cs_[i] = solids_only_ && ph[i] != kSolid ? 0.0 : mats[mt[i]].sound_speed();
       alpha_[i] = bodies[bd[i]].av_alpha;
       beta_[i] = bodies[bd[i]].av_beta;
     }

@@ -76,7 +76,9 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   auto lam = p.template view<double>(klam_);
   std::span<Vec<D>> aw;
   if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_);
-  const Vec<D> g = sim.body_force();
+  auto bd = p.body();
+  std::vector<Vec<D>> gb;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) gb.push_back(sim.body_force(int(b)));
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
@@ -101,23 +103,24 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
       grad[i] = invert_correction<D>(bf) * graw;
       lam[i] = min_eigenvalue<D>(ba);
     } else {
-      // Adami et al. 2012, Eq. 27-28: p_w = [sum_f p_f W + (g - a_w) . sum_f rho_f r_wf W] / sum_f
-      // W.
+      // Adami et al. 2012, Eq. 27-28: p_w = [sum_f p_f W + (g - a_w) . sum_f rho_f r_wf W] /
+      // sum_f W.
       double sw = 0, sp = 0;
       Vec<D> srw = Vec<D>::Zero(), sv = Vec<D>::Zero();
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         if (ph[j] != kFluid) continue;
         const double w = pl.w[k];
+        const Vec<D>& r = pl.r[k];  // r_wf = x_w - x_f
         sw += w;
-        sp += pr[j] * w;
-        srw += (rho[j] * w) * pl.r[k];  // r_wf = x_w - x_f
+        sp += (pr[j] + rho[j] * gb[bd[j]].dot(r)) * w;  // g of the fluid's body
+        srw += (rho[j] * w) * r;
         sv += w * v[j];
       }
       if (sw > 0) {
         // The wall's acceleration: prescribed motion (walls) or the last step's (solid, rigid).
         const Vec<D> ai = ph[i] == kWall ? aw[i] : a[i];
-        pw[i] = (sp + (g - ai).dot(srw)) / sw;
+        pw[i] = (sp - ai.dot(srw)) / sw;
         vw[i] = sv / sw;
       } else {
         pw[i] = 0;

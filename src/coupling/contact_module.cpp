@@ -1,0 +1,179 @@
+#include "contact_module.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace monosph {
+
+namespace {
+
+// Plane-strain compliance (1 - nu^2)/E of a material; a material without shear modulus (a fluid
+// used for wall particles) takes its bulk modulus as the plane-strain modulus.
+double compliance(const Material& m) {
+  const double k = m.bulk_modulus, mu = m.shear_modulus;
+  if (!(mu > 0)) return 1.0 / k;
+  const double e = 9 * k * mu / (3 * k + mu), nu = (3 * k - 2 * mu) / (2 * (3 * k + mu));
+  return (1 - nu * nu) / e;
+}
+
+}  // namespace
+
+template <int D>
+ContactModule<D>::ContactModule(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  kcl_ = p.add_field("cluster", 1, FieldType::Int, true);
+  kcf_ = p.add_field("contact_force", D, FieldType::Real, true);  // per depth in 2D
+  spec_ = sim.scene().contact;
+  dc_ = spec_.distance * sim.dp();
+  depth_ = D == 2 ? sim.dp() : 1.0;
+  const auto& mats = sim.materials();
+  nmat_ = mats.size();
+  estar_.resize(nmat_ * nmat_);
+  for (std::size_t a = 0; a < nmat_; ++a)
+    for (std::size_t b = 0; b < nmat_; ++b)
+      estar_[a * nmat_ + b] = 1.0 / (compliance(mats[a]) + compliance(mats[b]));
+}
+
+template <int D>
+double ContactModule<D>::pair_force(double r, int mi, int mj, double m_i, double m_j) const {
+  if (r >= dc_) return 0.0;
+  if (spec_.law == "hertz") {
+    const double delta = dc_ - r, rstar = 0.25 * dc_;  // two spheres of radius d_c/2
+    return 4.0 / 3.0 * estar_[idx(mi, mj)] * std::sqrt(rstar) * delta * std::sqrt(delta) / depth_;
+  }
+  const double q = dc_ / r, mij = 2 * m_i * m_j / (m_i + m_j);
+  return mij * spec_.strength * (std::pow(q, spec_.p1) - std::pow(q, spec_.p2)) / r;
+}
+
+template <int D>
+void ContactModule<D>::forces(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  auto ph = p.phase();
+  auto v = p.v();
+  auto a = p.a();
+  auto m = p.m();
+  auto mt = p.material();
+  auto cl = p.template view<std::int64_t>(kcl_);
+  auto cf = p.template view<Vec<D>>(kcf_);
+  const std::size_t n = p.size();
+  touch_.assign(n, 0);
+  near_.assign(n, 0);
+  const bool hertz = spec_.law == "hertz";
+  const double dc = dc_, release = 1.1 * dc_, zeta = spec_.damping;
+  const double delta_floor = 0.05 * dc_;  // stiffness for the step at >= 0.1 R overlap
+  long npairs = 0;
+  double w2 = 0, worst = 0;
+#pragma omp parallel for schedule(static) reduction(+ : npairs) reduction(max : w2, worst)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto pi = ph[i];
+    cf[i].setZero();
+    if (pi != kRigid && pi != kSolid && pi != kWall) continue;
+    Vec<D> f = Vec<D>::Zero();
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      const auto pj = ph[j];
+      const bool contact = pi == kRigid
+                               ? (pj == kSolid || pj == kWall || (pj == kRigid && cl[j] != cl[i]))
+                               : pj == kRigid;
+      if (!contact) continue;
+      const double r = pl.r[k].norm();
+      // Time-step stiffness k/m of this particle, at an overlap of at least 0.1 R.
+      if (pi != kWall) {
+        double kn;
+        if (hertz) {
+          const double delta = std::max(dc - r, delta_floor);
+          kn = 2.0 * estar_[idx(mt[i], mt[j])] * std::sqrt(0.25 * dc * delta) / depth_;
+        } else {
+          const double re = std::min(r, 0.9 * dc), q = dc / re;
+          const double mij = 2 * m[i] * m[j] / (m[i] + m[j]);
+          kn = mij * spec_.strength *
+               std::abs(-(spec_.p1 + 1) * std::pow(q, spec_.p1) +
+                        (spec_.p2 + 1) * std::pow(q, spec_.p2)) /
+               (re * re);
+        }
+        w2 = std::max(w2, kn / m[i]);
+      }
+      if (pi == kRigid && pj != kRigid && r < release) near_[i] = 1;
+      if (r >= dc) continue;
+      const Vec<D> nrm = pl.r[k] / r;  // from j to i
+      double fn = pair_force(r, static_cast<int>(mt[i]), static_cast<int>(mt[j]), m[i], m[j]);
+      if (hertz && zeta > 0) {
+        // Normal dashpot -2 zeta sqrt(k m*) v_n, k = dF/d(delta) = 1.5 F/delta (Tsuji et al. 1992).
+        const double kn = 1.5 * fn / (dc - r), ms = m[i] * m[j] / (m[i] + m[j]);
+        fn = std::max(0.0, fn - 2 * zeta * std::sqrt(kn * ms) * (v[i] - v[j]).dot(nrm));
+      }
+      f += fn * nrm;
+      worst = std::max(worst, dc - r);
+      if (static_cast<int>(i) < j) ++npairs;
+      if (pi == kRigid && pj != kRigid) touch_[i] = 1;
+    }
+    cf[i] = f;
+    if (pi != kWall) a[i] += f / m[i];  // walls move as prescribed
+  }
+  pairs_ = npairs;
+  omega2_ = w2;
+  max_overlap_ = worst;
+  // Impacts: a cluster that touches a solid or wall body now and was free before (released only
+  // when no member is within 1.1 d_c any more). Serial, in particle order.
+  long ncl = 0;
+  for (std::size_t i = 0; i < n; ++i) ncl = std::max<long>(ncl, cl[i] + 1);
+  in_contact_.resize(ncl, 0);
+  std::vector<char> touching(ncl, 0), close(ncl, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] != kRigid || cl[i] < 0) continue;
+    touching[cl[i]] |= touch_[i];
+    close[cl[i]] |= near_[i];
+  }
+  for (long c = 0; c < ncl; ++c) {
+    if (touching[c] && !in_contact_[c]) ++impacts_, in_contact_[c] = 1;
+    if (!close[c]) in_contact_[c] = 0;
+  }
+}
+
+template <int D>
+double ContactModule<D>::max_dt(Simulation<D>&) {
+  // A contact is a spring of frequency sqrt(k/m): dt <= 0.1 pi sqrt(m/k) (20 steps per period,
+  // equations.md Sect. 7), with k at the largest overlap (at least 0.1 R).
+  if (!(omega2_ > 0)) return std::numeric_limits<double>::infinity();
+  return 0.1 * std::numbers::pi / std::sqrt(omega2_);
+}
+
+template <int D>
+std::vector<std::string> ContactModule<D>::probe_columns(const ProbeSpec& s) const {
+  if (s.type == "grain_impacts" || s.type == "contact_pairs") return {""};
+  return {};
+}
+
+template <int D>
+void ContactModule<D>::probe(Simulation<D>&, const ProbeSpec& s, std::vector<double>& out) {
+  out.push_back(s.type == "grain_impacts" ? static_cast<double>(impacts_)
+                                          : static_cast<double>(pairs_));
+}
+
+template <int D>
+void ContactModule<D>::save_state(std::map<std::string, double>& s) const {
+  s["contact.impacts"] = static_cast<double>(impacts_);
+  for (std::size_t c = 0; c < in_contact_.size(); ++c)
+    s[fmt::format("contact.in_contact.{}", c)] = in_contact_[c];
+}
+
+template <int D>
+void ContactModule<D>::load_state(Simulation<D>&, const std::map<std::string, double>& s) {
+  auto it = s.find("contact.impacts");
+  impacts_ = it == s.end() ? 0 : static_cast<long>(it->second);
+  in_contact_.clear();
+  for (std::size_t c = 0;; ++c) {
+    auto f = s.find(fmt::format("contact.in_contact.{}", c));
+    if (f == s.end()) break;
+    in_contact_.push_back(f->second != 0);
+  }
+}
+
+template class ContactModule<2>;
+template class ContactModule<3>;
+
+}  // namespace monosph
