@@ -2,7 +2,7 @@
 PRESET ?= release
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc)
-SCENE  ?= cases/acoustic_wave/scene.yaml
+SCENE  ?= cases/abrasive_flow_machining/scene.yaml
 OUT    ?= out/$(notdir $(patsubst %/,%,$(dir $(SCENE))))
 
 .PHONY: deps configure build run test bench format clean

@@ -180,8 +180,18 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
     for (std::size_t k : c.members) off[k] = x0 + min_image(x[k] - x0) - c.centre;
   }
   mass_properties(sim);
-  for (auto& c : c_)
-    if constexpr (D == 3) c.momentum = c.inertia_body * c.omega;  // q = identity
+  // The rigid projection of the initial velocity field: linear momentum (above) and angular
+  // momentum sum_k m_k r_k x v_k about the centre, plus the given angular_velocity. A grain
+  // started in a shear flow u(y) thus spins at about -u'/2, as the fluid around it.
+  for (auto& c : c_) {
+    Vec3 l = Vec3::Zero();
+    for (std::size_t k : c.members)
+      l += pad3<D>(off[k]).cross(pad3<D>(Vec<D>(m[k] * (v[k] - c.velocity))));
+    if constexpr (D == 2)
+      c.omega[2] += l[2] / c.inertia;
+    else
+      c.momentum = l + c.inertia_body * c.omega;  // q = identity
+  }
   set_members(sim, false);
 }
 
@@ -292,6 +302,11 @@ void ClusterModule<D>::save_state(std::map<std::string, double>& s) const {
       put("momentum", a, c.momentum[a]);
     }
     put("angle", 0, c.angle);
+    // Mass and inertia as computed at the start: summed again in another particle order they
+    // would differ in the last bits and a restart would not be bit-identical.
+    put("mass", 0, c.mass);
+    put("inertia", 0, c.inertia);
+    for (int a = 0; a < 9; ++a) put("inertia_body", a, c.inertia_body(a / 3, a % 3));
     put("q", 0, c.q.w()), put("q", 1, c.q.x()), put("q", 2, c.q.y()), put("q", 3, c.q.z());
   }
 }
@@ -307,7 +322,6 @@ void ClusterModule<D>::load_state(Simulation<D>& sim, const std::map<std::string
   for (std::size_t i = 0; i < p.size(); ++i)
     if (cl[i] >= 0) c_.at(cl[i]).body = static_cast<int>(bd[i]);
   collect_members(sim);
-  mass_properties(sim);
   for (std::size_t k = 0; k < c_.size(); ++k) {
     Cluster& c = c_[k];
     auto get = [&](const char* what, int comp) {
@@ -326,6 +340,10 @@ void ClusterModule<D>::load_state(Simulation<D>& sim, const std::map<std::string
       c.momentum[a] = get("momentum", a);
     }
     c.angle = get("angle", 0);
+    c.mass = get("mass", 0);
+    c.inertia = get("inertia", 0);
+    for (int a = 0; a < 9; ++a) c.inertia_body(a / 3, a % 3) = get("inertia_body", a);
+    c.inertia_body_inv = c.inertia_body.inverse();
     c.q = Eigen::Quaterniond(get("q", 0), get("q", 1), get("q", 2), get("q", 3));
   }
 }

@@ -33,6 +33,9 @@ const Case kCases[] = {
     {"output_unknown_field.yaml", "output.fields: no particle field 'vorticity'"},
     {"surface_typo.yaml", "surfaces[0] (floor).frictoin: unknown key"},
     {"missing_stl.yaml", "surfaces[0] (tool).stl: cannot read STL file"},
+    {"clusters_not_union.yaml",
+     "bodies[0] (grains).clusters: per_part needs a shape that is a union"},
+    {"contact_law_typo.yaml", "contact.law: 'herz' is not allowed"},
 };
 
 void PrintTo(const Case& c, std::ostream* os) {

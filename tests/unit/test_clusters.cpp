@@ -61,6 +61,36 @@ end_time: 1
                      bodies, extra);
 }
 
+// A grain in a water tank under gravity (fluid around it: fill rest).
+const char* kSettle = R"(
+name: settle
+dimension: 2
+dp: 0.002
+domain: {min: [-0.006, -0.006], max: [0.086, 0.1]}
+materials:
+  water: {density: 1000, sound_speed: 15, viscosity: 0.01}
+  iron: {preset: iron}
+bodies:
+  - name: grain
+    phase: rigid
+    material: iron
+    shape: {circle: {center: [0.04, 0.03], radius: 0.006}}
+  - name: water
+    phase: fluid
+    material: water
+    fill: rest
+    shape: {box: {min: [0, 0], max: [0.08, 0.07]}}
+    density_diffusion: {delta: 0.1}
+    shifting: {speed: 0.5}
+  - name: tank
+    phase: wall
+    material: water
+    shape: {difference: [{box: {min: [-0.006, -0.006], max: [0.086, 0.1]}}, {box: {min: [0, 0], max: [0.08, 0.1]}}]}
+contact: {damping: 0.3}
+body_force: [0, -9.81]
+end_time: 1
+)";
+
 }  // namespace
 
 TEST(Clusters, GrainInVacuumKeepsMomentumAndShapeAcrossAPeriodicBoundary) {
@@ -267,34 +297,7 @@ TEST(Clusters, GrainInFluidMomentumBalancesTheBodyForces) {
   // A grain in a water tank under gravity. Every step, the change of momentum of fluid + grain
   // equals dt times the mean of (body forces - forces on the walls) at both ends of the step, to
   // round-off: all fluid-grain, fluid-wall and grain-wall forces are exactly opposite pairs.
-  auto sim = build<2>(R"(
-name: settle
-dimension: 2
-dp: 0.002
-domain: {min: [-0.006, -0.006], max: [0.086, 0.1]}
-materials:
-  water: {density: 1000, sound_speed: 15, viscosity: 0.01}
-  iron: {preset: iron}
-bodies:
-  - name: grain
-    phase: rigid
-    material: iron
-    shape: {circle: {center: [0.04, 0.03], radius: 0.006}}
-  - name: water
-    phase: fluid
-    material: water
-    fill: rest
-    shape: {box: {min: [0, 0], max: [0.08, 0.07]}}
-    density_diffusion: {delta: 0.1}
-    shifting: {speed: 0.5}
-  - name: tank
-    phase: wall
-    material: water
-    shape: {difference: [{box: {min: [-0.006, -0.006], max: [0.086, 0.1]}}, {box: {min: [0, 0], max: [0.08, 0.1]}}]}
-contact: {damping: 0.3}
-body_force: [0, -9.81]
-end_time: 1
-)");
+  auto sim = build<2>(kSettle);
   auto& p = sim->particles();
   auto& cm = module<ClusterModule<2>>(*sim);
   auto total = [&](Vec<2>& mom, Vec<2>& net) {
@@ -347,4 +350,5 @@ TEST(Clusters, ResultsDoNotDependOnThreadCount) {
     initial: {velocity: [-2, 0]})"));
       },
       300);
+  test::expect_thread_independent<2>([] { return build<2>(kSettle); }, 100);
 }

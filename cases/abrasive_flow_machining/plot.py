@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""Figures of the abrasive-flow-machining case (MMB 2020 Fig. 16 style).
+
+usage: plot.py OUT.png RUN_WITH_CONTROL RUN_WITHOUT_CONTROL
+Each RUN is an output folder of `monosph run` (VTU frames, probes.csv). Top: the last frame with
+hourglass control, bottom: without (solid grey, grains light blue, fluid dark blue; solid
+particles coloured by the disorder measure). Right: disorder, removed mass and grain impacts against time.
+Needs python3-vtk9 and python3-matplotlib (Debian)."""
+import csv
+import glob
+import os
+import sys
+
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+except ImportError as e:
+    sys.exit(f"plot.py: {e} (apt-get install python3-vtk9 python3-matplotlib)")
+
+
+def last_frame(run):
+    files = sorted(glob.glob(os.path.join(run, "*_[0-9]*.vtu")))
+    if not files:
+        sys.exit(f"plot.py: no VTU frames in {run}")
+    r = vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(files[-1])
+    r.Update()
+    g = r.GetOutput()
+    d = {"x": vtk_to_numpy(g.GetPoints().GetData())}
+    pd = g.GetPointData()
+    for i in range(pd.GetNumberOfArrays()):
+        d[pd.GetArrayName(i)] = vtk_to_numpy(pd.GetArray(i))
+    t = g.GetFieldData().GetArray("TimeValue")
+    d["time"] = t.GetValue(0) if t else float("nan")
+    return d
+
+
+def probes(run):
+    with open(os.path.join(run, "probes.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def main():
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    out, runs = sys.argv[1], sys.argv[2:]
+    labels = ["with hourglass control", "without hourglass control"]
+    fig = plt.figure(figsize=(14, 7.5))
+    gs = fig.add_gridspec(2, 2, width_ratios=[2.2, 1])
+    for k, run in enumerate(runs):
+        d = last_frame(run)
+        ax = fig.add_subplot(gs[k, 0])
+        x, ph = d["x"] * 1e6, d["phase"]
+        dis = d.get("disorder", np.zeros(len(x)))
+        s = 2.0
+        ax.scatter(x[ph == 0, 0], x[ph == 0, 1], s=s, c="#1f3b73", lw=0)
+        ax.scatter(x[ph == 3, 0], x[ph == 3, 1], s=s, c="#555555", lw=0)
+        sc = ax.scatter(x[ph == 1, 0], x[ph == 1, 1], s=s, c=dis[ph == 1], cmap="Greys",
+                        vmin=-0.15, vmax=0.3, lw=0)
+        ax.scatter(x[ph == 2, 0], x[ph == 2, 1], s=s, c="#8ecae6", lw=0)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 60)
+        ax.set_ylim(-10, 31.5)
+        ax.set_title(f"{labels[k]}, t = {d['time'] * 1e6:.2f} us (solid grey = disorder, dp)")
+        ax.set_xlabel("x [um]")
+        ax.set_ylabel("y [um]")
+        fig.colorbar(sc, ax=ax, fraction=0.02)
+    ax1 = fig.add_subplot(gs[0, 1])
+    ax2 = fig.add_subplot(gs[1, 1])
+    ax3 = ax2.twinx()
+    for k, run in enumerate(runs):
+        p = probes(run)
+        ax1.semilogy(p["time"] * 1e6, np.maximum(p["disorder"], 1e-8), label=labels[k])
+        ax2.plot(p["time"] * 1e6, p["removed_mass"] * 1e6, label=f"removed mass, {labels[k]}")
+        ax3.plot(p["time"] * 1e6, p["grain_impacts"], "--", label=f"impacts, {labels[k]}")
+    ax1.set_ylabel("largest disorder of the PMMA [dp]")
+    ax2.set_ylabel("removed PMMA mass [mg per m depth]")
+    ax3.set_ylabel("grain impacts (dashed)")
+    ax3.legend(loc="lower right")
+    for a in (ax1, ax2):
+        a.set_xlabel("t [us]")
+        a.grid(True)
+        a.legend()
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"written {out}")
+
+
+if __name__ == "__main__":
+    main()
