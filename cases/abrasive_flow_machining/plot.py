@@ -61,7 +61,7 @@ def main():
         ax.scatter(x[ph == 0, 0], x[ph == 0, 1], s=s, c="#1f3b73", lw=0)
         ax.scatter(x[ph == 3, 0], x[ph == 3, 1], s=s, c="#555555", lw=0)
         sc = ax.scatter(x[ph == 1, 0], x[ph == 1, 1], s=s, c=dis[ph == 1], cmap="Greys",
-                        vmin=-0.15, vmax=0.3, lw=0)
+                        vmin=-0.025, vmax=0.05, lw=0)
         ax.scatter(x[ph == 2, 0], x[ph == 2, 1], s=s, c="#8ecae6", lw=0)
         ax.set_aspect("equal")
         ax.set_xlim(0, 60)

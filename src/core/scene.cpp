@@ -624,6 +624,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("shifting");
       }
+      if (b.has("viscous_form")) {
+        if (body.phase != "fluid") scene_error(p + ".viscous_form", "applies to fluid bodies only");
+        body.viscous_form = b.choice("viscous_form", {"auto", "morris", "central"});
+      } else {
+        b.optional("viscous_form");
+      }
       if (b.has("slip")) {
         if (body.phase == "fluid")
           scene_error(p + ".slip", "applies to wall-like (non-fluid) bodies");

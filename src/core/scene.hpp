@@ -87,6 +87,9 @@ struct BodySpec {
   // the anti-clustering term R (W_ij / W(dp))^n.
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
   bool no_slip = true;     // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
+  // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular
+  // momentum), auto (central when the scene has rigid clusters, else morris)
+  std::string viscous_form = "auto";
   int erosion = 0;         // remove particles with D >= 1: 0 never, 1 all, 2 surface only
   Point body_force;        // replaces the scene's body_force when given
   bool fill_rest = false;  // takes only the lattice nodes no other body takes

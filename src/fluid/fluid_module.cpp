@@ -38,6 +38,15 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   kff_ = p.add_field("fluid_force", D, FieldType::Real,
                      true);  // force of the fluid on a wall-like particle
   for (const auto& b : sim.bodies()) any_wall_ = any_wall_ || b.phase == kWall;
+  // Viscous form: Morris et al. 1997 (default) or the central 2 (d + 2) nu pi_ij of Sun et al.
+  // 2017, which conserves angular momentum. A scene with rigid clusters needs the central form:
+  // Morris's pair forces along v_ij put a spurious torque on a grain (a free cylinder in shear
+  // turned at 1.77 gamma/2 instead of 0.95; tests/unit/test_clusters.cpp).
+  bool any_rigid = false;
+  for (const auto& b : sim.bodies()) any_rigid = any_rigid || b.phase == kRigid;
+  for (const auto& b : sim.scene().bodies)
+    if (b.phase == "fluid")
+      central_ = central_ || b.viscous_form == "central" || (b.viscous_form == "auto" && any_rigid);
   if (any_wall_) {
     kaw_ = p.add_field("wall_acceleration", D);
     kvprev_ = p.add_field("wall_previous_velocity", D);
@@ -77,6 +86,11 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   std::span<Vec<D>> aw;
   if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_);
   auto bd = p.body();
+  // Velocity gradient of the rigid motion of cluster particles (set by the clusters module).
+  const int kgrad_rigid = p.find("rigid_velocity_gradient");
+  const bool kG = kgrad_rigid >= 0;
+  std::span<Mat<D>> G;
+  if (kG) G = p.template view<Mat<D>>(kgrad_rigid);
   std::vector<Vec<D>> gb;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) gb.push_back(sim.body_force(int(b)));
   const std::size_t n = p.size();
@@ -115,7 +129,11 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
         sw += w;
         sp += (pr[j] + rho[j] * gb[bd[j]].dot(r)) * w;  // g of the fluid's body
         srw += (rho[j] * w) * r;
-        sv += w * v[j];
+        // The fluid velocity relative to the body's own motion field carried to x_w: a rigid
+        // cluster rotates (G = skew(omega)), so v_f - G (x_f - x_w) = v_f + G r. Adami's smoothed
+        // velocity assumes a uniform wall velocity over the support; for a rotating grain that
+        // assumption made a free cylinder in shear spin at 1.9 gamma/2 instead of gamma/2.
+        sv += w * (kG ? Vec<D>(v[j] + G[i] * r) : Vec<D>(v[j]));
       }
       if (sw > 0) {
         // The wall's acceleration: prescribed motion (walls) or the last step's (solid, rigid).
@@ -191,7 +209,8 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
   // Physical viscosity: Morris et al. 1997, a_i = 2 nu (rho0/rho_i) sum_j V_j F_ij v_ij (with
   // r^2/(r^2 + 0.01 h^2)); artificial: delta-SPH alpha h c0 (rho0/rho_i) sum_j pi_ij grad W V_j.
   // The Morris form follows the exact decay of the Taylor-Green vortex within 0.9 % at 100^2,
-  // the 2(d + 2) nu pi_ij form of Sun 2017 within 2.1 % (cases/taylor_green/README.md).
+  // the 2(d + 2) nu pi_ij form of Sun 2017 within 2.1 % (cases/taylor_green/README.md); that
+  // one conserves angular momentum and is used with rigid clusters (central_).
   auto nu_of = [&](std::size_t i) { return 2.0 * nu_[mt[i]]; };
   auto alpha_of = [&](std::size_t i) { return bodies[bd[i]].av_alpha * h * c0_[mt[i]]; };
   // Both viscous terms of pair (i, j) with the velocity vj of j, as an acceleration factor.
@@ -220,8 +239,9 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         if (fj || bodies[bd[j]].no_slip) {
           // pi_ij = v_ij . r_ij / (r^2 + 0.01 h^2); at a no-slip wall v_j -> 2 v_w - v~_w.
           const Vec<D> vjv = fj ? Vec<D>(v[j]) : Vec<D>(2.0 * v[j] - vw[j]);
-          const double nu = fj ? 0.5 * (nui + nu_of(j)) : nui;
-          const double al = fj ? 0.5 * (ali + alpha_of(j)) : ali;
+          double nu = fj ? 0.5 * (nui + nu_of(j)) : nui;
+          double al = fj ? 0.5 * (ali + alpha_of(j)) : ali;
+          if (central_) al += (D + 2) * nu, nu = 0;  // 2 (d + 2) nu pi_ij (Sun 2017)
           av += viscous(nu, al, vj, pl.f[k], r, v[i] - vjv);
         }
         if (b.shift_speed > 0) {
@@ -258,7 +278,9 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         if (noslip) {  // minus the viscous force on j: rho0 V_j V_i (pair term of j)
           const Vec<D> viv = 2.0 * v[i] - vw[i];
           f -= rho0_[mt[j]] * vol[j] *
-               viscous(nu_of(j), alpha_of(j), vol[i], pl.f[k], r, v[j] - viv);
+               (central_
+                    ? viscous(0.0, alpha_of(j) + (D + 2) * nu_of(j), vol[i], pl.f[k], r, v[j] - viv)
+                    : viscous(nu_of(j), alpha_of(j), vol[i], pl.f[k], r, v[j] - viv));
         }
       }
       ff[i] = f;

@@ -20,6 +20,8 @@ ClusterModule<D>::ClusterModule(Simulation<D>& sim) {
   auto& p = sim.particles();
   kcl_ = p.add_field("cluster", 1, FieldType::Int, true);  // cluster index, -1 for others
   koff_ = p.add_field("cluster_offset", D);  // body-frame position from the cluster centre
+  // grad v of the rigid motion, skew(omega), read by the fluid's wall condition (zero elsewhere)
+  kG_ = p.add_field("rigid_velocity_gradient", D * D);
   const Scene& s = sim.scene();
   for (int a = 0; a < D; ++a) {
     lo_[a] = s.domain_min[a];
@@ -102,10 +104,14 @@ void ClusterModule<D>::set_members(Simulation<D>& sim, bool positions) {
   auto x = p.x();
   auto v = p.v();
   auto off = p.template view<Vec<D>>(koff_);
+  auto G = p.template view<Mat<D>>(kG_);
   for (const auto& c : c_) {
     const Mat<D> rot = rotation(c);
     const Vec3 w = world_omega(c);
+    Mat3 skew;
+    skew << 0, -w[2], w[1], w[2], 0, -w[0], -w[1], w[0], 0;
     for (std::size_t k : c.members) {
+      G[k] = skew.template topLeftCorner<D, D>();
       const Vec<D> r = rot * off[k];
       v[k] = c.velocity + cross(w, pad3<D>(r)).template head<D>();
       if (!positions) continue;

@@ -53,7 +53,7 @@ class ClusterModule : public Module<D> {
   Vec3 world_omega(const Cluster& c) const;  // 3D: I_w^-1 L
   Vec<D> min_image(Vec<D> d) const;
 
-  int kcl_, koff_;
+  int kcl_, koff_, kG_;
   std::vector<Cluster> c_;
   Vec<D> lo_, len_;
   std::array<bool, D> periodic_{};
