@@ -49,6 +49,13 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     bodies_.push_back(std::move(info));
   }
   removed_mass_.assign(bodies_.size(), 0.0);
+  // Physics loops use schedule(runtime). One phase: equal contiguous halves (best locality: a
+  // solid plate runs 30 % faster than with chunks). Several phases: loops that skip the other
+  // phases would leave one thread idle (particles are sorted by cell, so phases form blocks),
+  // hence chunks of 64 (the abrasive-flow scene runs 1.4-1.7x faster).
+  bool mixed = false;
+  for (const auto& b : bodies_) mixed = mixed || b.phase != bodies_.front().phase;
+  omp_set_schedule(omp_sched_static, mixed ? 64 : 0);
   if (scene_.newmark_gamma != 0.5) kaprev_ = p_.add_field("previous_acceleration", D);
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   for (const auto& b : bodies_) gb_.push_back(Eigen::Map<const V>(b.body_force.data()));

@@ -49,7 +49,7 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
   const double w0 = sim.kernel().w(0.0);
   auto ph = p.phase();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (solids_only_ && ph[i] != kSolid) continue;
     const int gi = grp[i];
@@ -94,7 +94,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
     for (std::size_t i = 0; i < n; ++i)
       cs_[i] = mats[mt[i]].sound_speed(), delta_[i] = bodies[bd[i]].delta;
   }
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (solids_only_ && ph[i] != kSolid) continue;
     const int gi = grp[i];
@@ -129,7 +129,7 @@ void SphEquations<D>::constitutive(Simulation<D>& sim) {
   auto ph = p.phase();
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (solids_only_ && ph[i] != kSolid) continue;
     const Material& mm = mats[mt[i]];
@@ -180,7 +180,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   // corrected (Bonet & Lok 1999): T = Sigma L, w_j = V_j, c_i = 1/rho_i -- the exact adjoint of the
   // corrected velocity gradient (Eq. 16), so that sum_i m_i a_i.v_i = -sum_i V_i Sigma_i : grad
   // v_i.
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     Mat<D> s = -pr[i] * Mat<D>::Identity();
     if (kstress_ >= 0) s += dev[i].template topLeftCorner<D, D>();  // MMB Eq. 12
@@ -198,7 +198,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
       beta_[i] = bodies[bd[i]].av_beta;
     }
   }
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (solids_only_ && ph[i] != kSolid) continue;
     const int gi = grp[i];
@@ -243,7 +243,7 @@ double SphEquations<D>::max_dt(Simulation<D>& sim) {
   const double h = sim.kernel().h();
   double dt = std::numeric_limits<double>::infinity();
   const std::size_t n = phimax_.size();
-#pragma omp parallel for reduction(min : dt) schedule(static, 64)
+#pragma omp parallel for reduction(min : dt) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
     dt = std::min(dt, h / (cs_[i] + 0.6 * (alpha_[i] * cs_[i] + beta_[i] * phimax_[i])));
   return sim.scene().cfl * dt;

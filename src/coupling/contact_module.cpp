@@ -67,7 +67,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   const double delta_floor = 0.05 * dc_;  // stiffness for the step at >= 0.1 R overlap
   long npairs = 0;
   double w2 = 0, worst = 0;
-#pragma omp parallel for schedule(static, 64) reduction(+ : npairs) reduction(max : w2, worst)
+#pragma omp parallel for schedule(runtime) reduction(+ : npairs) reduction(max : w2, worst)
   for (std::size_t i = 0; i < n; ++i) {
     const auto pi = ph[i];
     cf[i].setZero();

@@ -94,10 +94,10 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   std::vector<Vec<D>> gb;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) gb.push_back(sim.body_force(int(b)));
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
     if (ph[i] == kFluid) pr[i] = mats[mt[i]].pressure(rho[i]);  // p = c0^2 (rho - rho0) (Sun Eq. 2)
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
       Mat<D> bf = Mat<D>::Zero(), ba = Mat<D>::Zero();
@@ -164,7 +164,7 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
   auto grad = p.template view<Vec<D>>(kgrad_);
   const double h = sim.kernel().h();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] != kFluid) continue;  // walls keep drho = 0 (nothing writes it)
     const double delta = bodies[bd[i]].delta;
@@ -219,7 +219,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
     const double r2 = r.squaredNorm(), q = 1.0 / (r2 + eta2);
     return Vec<D>(vol_j * f * (nu * r2 * q * vij + (al * vij.dot(r) * q) * r));
   };
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
       const BodyInfo& b = bodies[bd[i]];
@@ -304,7 +304,7 @@ void FluidModule<D>::drift(Simulation<D>& sim, double dt) {
   std::span<Vec<D>> aw, vp;
   if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_), vp = p.template view<Vec<D>>(kvprev_);
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
       Vec<D> d = dt * shift[i];

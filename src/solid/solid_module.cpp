@@ -96,7 +96,7 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   auto L = p.template view<Mat<D>>(kgradv_);
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
     if (is_solid(ph[i]))
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
@@ -119,7 +119,7 @@ void SolidModule<D>::plastic_return(Simulation<D>& sim, double dt) {
   if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     const Material& mat = mats[mt[i]];
@@ -151,7 +151,7 @@ void SolidModule<D>::erode(Simulation<D>& sim) {
   auto& flag = erode_flag_;
   flag.assign(n, 0);
   long count = 0;
-#pragma omp parallel for reduction(+ : count) schedule(static, 64)
+#pragma omp parallel for reduction(+ : count) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i]) || dmg[i] < 1) continue;
     const int mode = bodies[bd[i]].erosion;
@@ -189,7 +189,7 @@ void SolidModule<D>::constitutive(Simulation<D>& sim) {
   if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
   const auto& bodies = sim.bodies();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     // A failed particle (D >= 1) is cracked material: no deviatoric stress (MMB Sect. 2.3) and,
@@ -220,7 +220,7 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
   auto Fr = p.template view<Mat<D>>(kFref_);
   const std::size_t n = p.size();
   if (rstart_.size() != n + 1) return;
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     // F_ref = I + sum_j (u_j - u_i) (x) g_ij = sum_j (x_j - x_i) (x) g_ij, because
@@ -258,7 +258,7 @@ void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
   const double dp = sim.dp();
   const std::size_t n = p.size();
   if (pl.count.size() != n) return;
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     Mat<D> A = Mat<D>::Zero(), B = Mat<D>::Zero();
@@ -315,7 +315,7 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
   const double rc = W.radius();
   // Reference pairs: same solid body, within the kernel support in the reference configuration.
   rstart_.assign(n + 1, 0);
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t c = 0;
     if (is_solid(ph[i]))
@@ -329,7 +329,7 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
   rj_.resize(rstart_[n]);
   rshift_.resize(rstart_[n]);
   rg_.resize(rstart_[n]);
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     std::size_t q = rstart_[i];
@@ -386,7 +386,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   std::span<double> ep, sy;
   if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
   omega2_.assign(n, 0.0);
-#pragma omp parallel for schedule(static, 64)
+#pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     const BodyInfo& b = bodies[bd[i]];
@@ -455,7 +455,7 @@ double SolidModule<D>::max_dt(Simulation<D>& sim) {
   double w2 = 0;
   const std::size_t n = omega2_.size();
   if (n != sim.particles().size()) return std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(max : w2) schedule(static, 64)
+#pragma omp parallel for reduction(max : w2) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) w2 = std::max(w2, omega2_[i]);
   if (w2 <= 0) return std::numeric_limits<double>::infinity();
   return 3.0 * sim.scene().cfl / std::sqrt(w2);
