@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 #include "assemble.hpp"
 #include "coupling/contact_module.hpp"
@@ -44,6 +46,44 @@ void cluster_momenta(const ClusterModule<D>& cm, Vec<D>& p, Vec3& l) {
   }
 }
 
+// Runs `steps` steps and returns the largest per-step error of the momentum balance of fluid +
+// clusters, change of momentum - dt (body forces - forces on the walls) averaged over the step's
+// ends, and its scale dt |F|. All fluid-grain, fluid-wall and grain-wall forces are exactly
+// opposite pairs, so the error is round-off.
+template <int D>
+std::pair<double, double> momentum_balance(Simulation<D>& sim, const Vec<D>& g, int steps) {
+  auto& p = sim.particles();
+  auto& cm = module<ClusterModule<D>>(sim);
+  auto total = [&](Vec<D>& mom, Vec<D>& net) {
+    mom.setZero();
+    net.setZero();
+    auto ph = p.phase();
+    auto ff = p.template view<Vec<D>>("fluid_force");
+    auto cf = p.template view<Vec<D>>("contact_force");
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (ph[i] == kFluid) mom += p.m()[i] * p.v()[i];
+      if (ph[i] != kWall)
+        net += p.m()[i] * g;
+      else
+        net -= ff[i] + cf[i];
+    }
+    for (std::size_t c = 0; c < cm.size(); ++c) mom += cm.cluster(c).mass * cm.cluster(c).velocity;
+  };
+  Vec<D> m0, f0, m1, f1;
+  total(m0, f0);
+  double worst = 0, scale = 0;
+  for (int s = 0; s < steps; ++s) {
+    const double t0 = sim.time();
+    sim.advance();
+    const double dt = sim.time() - t0;
+    total(m1, f1);
+    worst = std::max(worst, ((m1 - m0) - 0.5 * dt * (f0 + f1)).norm());
+    scale = std::max(scale, dt * f1.norm());
+    m0 = m1, f0 = f1;
+  }
+  return {worst, scale};
+}
+
 // Grains in vacuum: domain [0, 0.2] x [0, 0.1] (x periodic), dp = 1 mm, iron.
 std::string vacuum(const std::string& bodies, const std::string& extra = "") {
   return fmt::format(R"(
@@ -61,35 +101,14 @@ end_time: 1
                      bodies, extra);
 }
 
-// A grain in a water tank under gravity (fluid around it: fill rest).
-const char* kSettle = R"(
-name: settle
-dimension: 2
-dp: 0.002
-domain: {min: [-0.006, -0.006], max: [0.086, 0.1]}
-materials:
-  water: {density: 1000, sound_speed: 15, viscosity: 0.01}
-  iron: {preset: iron}
-bodies:
-  - name: grain
-    phase: rigid
-    material: iron
-    shape: {circle: {center: [0.04, 0.03], radius: 0.006}}
-  - name: water
-    phase: fluid
-    material: water
-    fill: rest
-    shape: {box: {min: [0, 0], max: [0.08, 0.07]}}
-    density_diffusion: {delta: 0.1}
-    shifting: {speed: 0.5}
-  - name: tank
-    phase: wall
-    material: water
-    shape: {difference: [{box: {min: [-0.006, -0.006], max: [0.086, 0.1]}}, {box: {min: [0, 0], max: [0.08, 0.1]}}]}
-contact: {damping: 0.3}
-body_force: [0, -9.81]
-end_time: 1
-)";
+// A grain in a water tank under gravity (fluid around it: fill rest); shared with the validation
+// test GrainInFluid.SettlesOnTheFloorAndTheTankCarriesTheWeight.
+std::string settle_scene() {
+  std::ifstream in(std::string(MONOSPH_CASES_DIR) + "/../tests/scenes/grain_in_tank.yaml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
 
 }  // namespace
 
@@ -297,39 +316,9 @@ TEST(Clusters, GrainInFluidMomentumBalancesTheBodyForces) {
   // A grain in a water tank under gravity. Every step, the change of momentum of fluid + grain
   // equals dt times the mean of (body forces - forces on the walls) at both ends of the step, to
   // round-off: all fluid-grain, fluid-wall and grain-wall forces are exactly opposite pairs.
-  auto sim = build<2>(kSettle);
-  auto& p = sim->particles();
+  auto sim = build<2>(settle_scene());
+  const auto [worst, scale] = momentum_balance<2>(*sim, Vec<2>(0, -9.81), 300);
   auto& cm = module<ClusterModule<2>>(*sim);
-  auto total = [&](Vec<2>& mom, Vec<2>& net) {
-    mom.setZero();
-    net.setZero();
-    auto ph = p.phase();
-    auto ff = p.view<Vec<2>>("fluid_force");
-    auto cf = p.view<Vec<2>>("contact_force");
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (ph[i] == kFluid) mom += p.m()[i] * p.v()[i];
-      if (ph[i] != kWall)
-        net += p.m()[i] * Vec<2>(0, -9.81);
-      else
-        net -= ff[i] + cf[i];
-    }
-    const auto& c = cm.cluster(0);
-    mom += c.mass * c.velocity;
-  };
-  Vec<2> m0, f0;
-  total(m0, f0);
-  double worst = 0, scale = 0;
-  for (int s = 0; s < 300; ++s) {
-    const double t0 = sim->time();
-    sim->advance();
-    const double dt = sim->time() - t0;
-    Vec<2> m1, f1;
-    total(m1, f1);
-    const Vec<2> err = (m1 - m0) - 0.5 * dt * (f0 + f1);
-    worst = std::max(worst, err.norm());
-    scale = std::max(scale, dt * f1.norm());
-    m0 = m1, f0 = f1;
-  }
   EXPECT_LT(worst, 1e-10 * scale);
   EXPECT_LT(cm.cluster(0).velocity[1], 0);  // sinking
 }
@@ -350,7 +339,7 @@ TEST(Clusters, ResultsDoNotDependOnThreadCount) {
     initial: {velocity: [-2, 0]})"));
       },
       300);
-  test::expect_thread_independent<2>([] { return build<2>(kSettle); }, 100);
+  test::expect_thread_independent<2>([] { return build<2>(settle_scene()); }, 100);
 }
 
 TEST(Clusters, CylinderInCouetteFlowRotatesAtHalfTheShearRate) {
@@ -432,36 +421,8 @@ bodies:
 body_force: [0, 0, -9.81]
 end_time: 1
 )");
-  auto& p = sim->particles();
+  const auto [worst, scale] = momentum_balance<3>(*sim, Vec<3>(0, 0, -9.81), 100);
   auto& cm = module<ClusterModule<3>>(*sim);
-  auto total = [&](Vec<3>& mom, Vec<3>& net) {
-    mom.setZero();
-    net.setZero();
-    auto ph = p.phase();
-    auto ff = p.view<Vec<3>>("fluid_force");
-    auto cf = p.view<Vec<3>>("contact_force");
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (ph[i] == kFluid) mom += p.m()[i] * p.v()[i];
-      if (ph[i] != kWall)
-        net += p.m()[i] * Vec<3>(0, 0, -9.81);
-      else
-        net -= ff[i] + cf[i];
-    }
-    mom += cm.cluster(0).mass * cm.cluster(0).velocity;
-  };
-  Vec<3> m0, f0;
-  total(m0, f0);
-  double worst = 0, scale = 0;
-  for (int s = 0; s < 100; ++s) {
-    const double t0 = sim->time();
-    sim->advance();
-    const double dt = sim->time() - t0;
-    Vec<3> m1, f1;
-    total(m1, f1);
-    worst = std::max(worst, ((m1 - m0) - 0.5 * dt * (f0 + f1)).norm());
-    scale = std::max(scale, dt * f1.norm());
-    m0 = m1, f0 = f1;
-  }
   EXPECT_LT(worst, 1e-10 * scale);
   EXPECT_LT(cm.cluster(0).velocity[2], 0);  // sinking
   const auto& c = cm.cluster(0);

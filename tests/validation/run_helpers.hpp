@@ -1,5 +1,6 @@
 #pragma once
 // Runs the monosph binary and reads what it wrote.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "core/checkpoint.hpp"
 
 namespace monosph::test {
 
@@ -77,6 +80,23 @@ inline double max_of(const std::vector<double>& v) {
 }
 inline double min_of(const std::vector<double>& v) {
   return *std::min_element(v.begin(), v.end());
+}
+
+// Two 2D checkpoints hold the same time, step, module state (cluster, contact, output counters)
+// and fields, bit for bit: a restart reproduced the uninterrupted run.
+inline void expect_same_checkpoint(const std::string& a, const std::string& b) {
+  Particles<2> pa, pb;
+  auto ma = read_checkpoint<2>(a, pa);
+  auto mb = read_checkpoint<2>(b, pb);
+  EXPECT_EQ(ma.time, mb.time);
+  EXPECT_EQ(ma.step, mb.step);
+  EXPECT_EQ(ma.scalars, mb.scalars);
+  ASSERT_EQ(pa.size(), pb.size());
+  for (const auto& f : pa.fields()) {
+    const auto& g = pb.field(f.name);
+    EXPECT_EQ(f.real, g.real) << f.name;
+    EXPECT_EQ(f.ints, g.ints) << f.name;
+  }
 }
 
 }  // namespace monosph::test

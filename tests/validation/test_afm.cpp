@@ -5,10 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
-#include "core/checkpoint.hpp"
 #include "run_helpers.hpp"
 
 using namespace monosph::test;
@@ -54,19 +51,7 @@ TEST(AbrasiveFlow, RestartEqualsUninterruptedRun) {
   auto b = run_monosph("run --restart " + half + "/final.h5 --out " + half +
                        " --set end_time=2e-7 --quiet");
   ASSERT_EQ(b.code, 0) << b.output;
-  monosph::Particles<2> pa, pb;
-  auto ma = monosph::read_checkpoint<2>(full + "/final.h5", pa);
-  auto mb = monosph::read_checkpoint<2>(half + "/final.h5", pb);
-  EXPECT_EQ(ma.time, mb.time);
-  EXPECT_EQ(ma.step, mb.step);
-  EXPECT_EQ(ma.scalars, mb.scalars);  // cluster and contact state
-  ASSERT_EQ(pa.size(), pb.size());
-  for (std::size_t k = 0; k < pa.fields().size(); ++k) {
-    const auto& f = pa.fields()[k];
-    const auto& g = pb.field(f.name);
-    EXPECT_EQ(f.real, g.real) << f.name;
-    EXPECT_EQ(f.ints, g.ints) << f.name;
-  }
+  expect_same_checkpoint(full + "/final.h5", half + "/final.h5");
 }
 
 TEST(GrainInFluid, SettlesOnTheFloorAndTheTankCarriesTheWeight) {
@@ -75,38 +60,7 @@ TEST(GrainInFluid, SettlesOnTheFloorAndTheTankCarriesTheWeight) {
   // viscosity), the vertical force of fluid and grain on the tank equals the weight of both
   // within 5 %. The per-step momentum balance to round-off is a unit test (Clusters.*).
   const std::string dir = out_dir("grain_in_fluid");
-  std::filesystem::create_directories(dir);
-  const std::string scene = dir + "/scene.yaml";
-  std::ofstream(scene) << R"(
-name: settle
-dimension: 2
-dp: 0.002
-domain: {min: [-0.006, -0.006], max: [0.086, 0.1]}
-materials:
-  water: {density: 1000, sound_speed: 15, viscosity: 0.01}
-  iron: {preset: iron}
-bodies:
-  - name: grain
-    phase: rigid
-    material: iron
-    shape: {circle: {center: [0.04, 0.03], radius: 0.006}}
-  - name: water
-    phase: fluid
-    material: water
-    fill: rest
-    shape: {box: {min: [0, 0], max: [0.08, 0.07]}}
-    density_diffusion: {delta: 0.1}
-    shifting: {speed: 0.5}
-  - name: tank
-    phase: wall
-    material: water
-    shape: {difference: [{box: {min: [-0.006, -0.006], max: [0.086, 0.1]}}, {box: {min: [0, 0], max: [0.08, 0.1]}}]}
-contact: {damping: 0.3}
-body_force: [0, -9.81]
-end_time: 0.8
-output: {every: 1}
-probes: {every: 0.005, list: [{name: y, type: mean, field: position.y, body: grain}, {name: fluid_on_tank, type: fluid_force, body: tank}, {name: grain_on_tank, type: integral, field: contact_force.y, body: tank, weight: "250000"}, {name: pen, type: penetration, body: grain, target: tank}, {name: fluid_mass, type: total_mass, body: water}, {name: grain_mass, type: total_mass, body: grain}]}
-)";
+  const std::string scene = source("tests/scenes/grain_in_tank.yaml");
   auto r = run_monosph("run " + scene + " --out " + dir + " --quiet");
   ASSERT_EQ(r.code, 0) << r.output;
   auto t = read_csv(dir + "/probes.csv");

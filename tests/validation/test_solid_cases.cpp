@@ -91,8 +91,9 @@ TEST(PatchTest, HourglassControlHoldsOneHundredBreathingPeriods) {
   EXPECT_GT(min_of(t["min_distance"]), 0.4);
   // Still breathing after 100 periods: the edge moves (amplitude decays through gamma).
   std::vector<double> late(t["edge_x"].end() - 1000, t["edge_x"].end());
-  EXPECT_GT(*std::max_element(late.begin(), late.end()) - *std::min_element(late.begin(), late.end()),
-            1e-3);
+  EXPECT_GT(
+      *std::max_element(late.begin(), late.end()) - *std::min_element(late.begin(), late.end()),
+      1e-3);
   const std::string out2 = out_dir("patch_no_hg");
   auto r2 = run_monosph("run " + source("cases/patch_test/scene.yaml") + " --out " + out2 +
                         " --quiet --set end_time=3 output.every=1 bodies.0.hourglass.xi=0");
