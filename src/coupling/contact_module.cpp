@@ -27,6 +27,7 @@ ContactModule<D>::ContactModule(Simulation<D>& sim) {
   kcl_ = p.add_field("cluster", 1, FieldType::Int, true);
   kcf_ = p.add_field("contact_force", D, FieldType::Real, true);  // per depth in 2D
   spec_ = sim.scene().contact;
+  hertz_ = spec_.law == "hertz";
   dc_ = spec_.distance * sim.dp();
   depth_ = D == 2 ? sim.dp() : 1.0;
   const auto& mats = sim.materials();
@@ -40,7 +41,7 @@ ContactModule<D>::ContactModule(Simulation<D>& sim) {
 template <int D>
 double ContactModule<D>::pair_force(double r, int mi, int mj, double m_i, double m_j) const {
   if (r >= dc_) return 0.0;
-  if (spec_.law == "hertz") {
+  if (hertz_) {
     const double delta = dc_ - r, rstar = 0.25 * dc_;  // two spheres of radius d_c/2
     return 4.0 / 3.0 * estar_[idx(mi, mj)] * std::sqrt(rstar) * delta * std::sqrt(delta) / depth_;
   }
@@ -60,9 +61,9 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   auto cl = p.template view<std::int64_t>(kcl_);
   auto cf = p.template view<Vec<D>>(kcf_);
   const std::size_t n = p.size();
-  touch_.assign(n, 0);
-  near_.assign(n, 0);
-  const bool hertz = spec_.law == "hertz";
+  touch_.resize(n);
+  near_.resize(n);
+  const bool hertz = hertz_;
   const double dc = dc_, release = 1.1 * dc_, zeta = spec_.damping;
   const double delta_floor = 0.05 * dc_;  // stiffness for the step at >= 0.1 R overlap
   long npairs = 0;
@@ -71,6 +72,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     const auto pi = ph[i];
     cf[i].setZero();
+    touch_[i] = near_[i] = 0;
     if (pi != kRigid && pi != kSolid && pi != kWall) continue;
     Vec<D> f = Vec<D>::Zero();
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
@@ -118,20 +120,33 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   omega2_ = w2;
   max_overlap_ = worst;
   // Impacts: a cluster that touches a solid or wall body now and was free before (released only
-  // when no member is within 1.1 d_c any more). Serial, in particle order.
-  long ncl = 0;
-  for (std::size_t i = 0; i < n; ++i) ncl = std::max<long>(ncl, cl[i] + 1);
+  // when no member is within 1.1 d_c any more). Serial over the rigid particles, in index order.
+  std::fill(touching_.begin(), touching_.end(), 0);
+  std::fill(close_.begin(), close_.end(), 0);
+  for (std::size_t i : rigid_) {
+    touching_[cl[i]] |= touch_[i];
+    close_[cl[i]] |= near_[i];
+  }
+  for (std::size_t c = 0; c < in_contact_.size(); ++c) {
+    if (touching_[c] && !in_contact_[c]) ++impacts_, in_contact_[c] = 1;
+    if (!close_[c]) in_contact_[c] = 0;
+  }
+}
+
+template <int D>
+void ContactModule<D>::on_rebuild(Simulation<D>& sim) {
+  // Rigid particles and the number of clusters (they never change; the order may).
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto cl = p.template view<std::int64_t>(kcl_);
+  rigid_.clear();
+  std::size_t ncl = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (ph[i] == kRigid && cl[i] >= 0)
+      rigid_.push_back(i), ncl = std::max<std::size_t>(ncl, cl[i] + 1);
   in_contact_.resize(ncl, 0);
-  std::vector<char> touching(ncl, 0), close(ncl, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (ph[i] != kRigid || cl[i] < 0) continue;
-    touching[cl[i]] |= touch_[i];
-    close[cl[i]] |= near_[i];
-  }
-  for (long c = 0; c < ncl; ++c) {
-    if (touching[c] && !in_contact_[c]) ++impacts_, in_contact_[c] = 1;
-    if (!close[c]) in_contact_[c] = 0;
-  }
+  touching_.assign(ncl, 0);
+  close_.assign(ncl, 0);
 }
 
 template <int D>

@@ -26,6 +26,7 @@ class ContactModule : public Module<D> {
   explicit ContactModule(Simulation<D>& sim);
   std::string name() const override { return "contact"; }
   void forces(Simulation<D>& sim) override;
+  void on_rebuild(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
   std::vector<std::string> probe_columns(const ProbeSpec& s) const override;
   void probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<double>& out) override;
@@ -44,12 +45,15 @@ class ContactModule : public Module<D> {
  private:
   std::size_t idx(int a, int b) const { return static_cast<std::size_t>(a) * nmat_ + b; }
   ContactSpec spec_;
+  bool hertz_ = true;  // spec_.law == "hertz"
   double dc_ = 0, depth_ = 1;
   std::size_t nmat_ = 0;
   std::vector<double> estar_;  // per material pair
   int kcl_, kcf_;
   std::vector<char> touch_, near_;  // per particle: touching / within 1.1 d_c of a solid or wall
   std::vector<char> in_contact_;    // per cluster
+  std::vector<char> touching_, close_;  // per cluster, this pass
+  std::vector<std::size_t> rigid_;      // indices of the rigid particles (since the last rebuild)
   long impacts_ = 0, pairs_ = 0;
   double max_overlap_ = 0, omega2_ = 0;
 };

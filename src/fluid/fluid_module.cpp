@@ -51,6 +51,7 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
     kaw_ = p.add_field("wall_acceleration", D);
     kvprev_ = p.add_field("wall_previous_velocity", D);
   }
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) gb_.push_back(sim.body_force(int(b)));
   for (const auto& m : sim.materials()) {
     c0_.push_back(m.sound_speed());
     rho0_.push_back(m.density);
@@ -91,8 +92,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   const bool kG = kgrad_rigid >= 0;
   std::span<Mat<D>> G;
   if (kG) G = p.template view<Mat<D>>(kgrad_rigid);
-  std::vector<Vec<D>> gb;
-  for (std::size_t b = 0; b < sim.bodies().size(); ++b) gb.push_back(sim.body_force(int(b)));
+  const std::vector<Vec<D>>& gb = gb_;
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
