@@ -4,12 +4,25 @@
 #include <CLI/CLI.hpp>
 
 #include "bench.hpp"
+#include "core/comm.hpp"
 #include "core/threads.hpp"
 #include "core/types.hpp"
 #include "info.hpp"
 #include "runner.hpp"
 
+namespace {
+int run_main(int argc, char** argv);
+}
+
 int main(int argc, char** argv) {
+  monosph::Comm::init(&argc, &argv);  // under mpirun only
+  const int code = run_main(argc, argv);
+  monosph::Comm::finalize();
+  return code;
+}
+
+namespace {
+int run_main(int argc, char** argv) {
   using namespace monosph;
   CLI::App app{"monosph: Eulerian-kernel SPH for fluids, hourglass-controlled solids and grains"};
   app.require_subcommand(1);
@@ -72,3 +85,4 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+}  // namespace

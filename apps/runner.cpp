@@ -93,6 +93,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   double next_output = 0, next_probe = 0, next_ckpt = scene.checkpoint_every;
   if (restart_meta) {
     read_checkpoint<D>(opt.restart, sim.particles());
+    sim.set_replicated();  // every rank read all particles: each keeps its share at init
     sim.set_state(restart_meta->time, restart_meta->step, restart_meta->dt);
     auto get = [&](const char* k, double d) {
       auto it = restart_meta->scalars.find(k);
@@ -118,22 +119,29 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     }
   }
   Probes<D> probes(sim);
+  const Comm& comm = sim.comm();
+  const bool root = comm.root();  // rank 0 writes the series, probes and summary (MPI)
   std::error_code ec;
   fs::create_directories(out, ec);
   {
-    std::ofstream test(out / ".write-test");
-    if (ec || !test) throw InputError("output: cannot write to directory " + out.string());
+    const fs::path test_file = out / (".write-test-" + std::to_string(comm.rank()));
+    std::ofstream test(test_file);
+    const bool ok = !ec && test;
+    test.close();
+    fs::remove(test_file, ec);
+    if (comm.min(ok ? 1L : 0L) == 0)
+      throw InputError("output: cannot write to directory " + out.string());
   }
-  fs::remove(out / ".write-test", ec);
 
   std::unique_ptr<VtkSeries<D>> vtk;
   if (opt.write_output) {
     vtk = std::make_unique<VtkSeries<D>>(out, scene.name);
+    vtk->set_piece(comm.rank(), comm.size());
     if (restart_meta) vtk->restore_frames(sim.time());
   }
   const fs::path csv_path = out / "probes.csv";
   std::ofstream csv;
-  if (opt.write_output) {
+  if (opt.write_output && root) {
     if (restart_meta) {
       // Keep the rows before the restart time, then append.
       std::vector<std::string> head;
@@ -163,6 +171,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     if (!opt.write_output) return;
     sim.diagnostics();
     auto row = probes.sample(sim);
+    if (!root) return;
     csv << fmt::format("{:.17g},{}", sim.time(), sim.step());
     for (double v : row) csv << fmt::format(",{:.17g}", v);
     csv << "\n";
@@ -185,18 +194,39 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     meta.scalars["next_probe"] = next_probe;
     meta.scalars["next_checkpoint"] = next_ckpt;
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
-    write_checkpoint<D>(file, p, meta);
+    if (!comm.parallel()) return write_checkpoint<D>(file, p, meta);
+    // MPI: rank 0 gathers the owned particles of every rank into one file, which a run on any
+    // number of ranks can restart from.
+    std::vector<int> idx(sim.owned());
+    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+    std::vector<char> buf;
+    pack_particles<D>(p, idx, buf);
+    auto all = comm.gather(buf);
+    std::string err;
+    if (root) {
+      Particles<D> q = p;
+      q.resize(0);
+      for (const auto& b : all) unpack_particles<D>(q, b);
+      q.set_next_id(p.next_id());
+      try {
+        write_checkpoint<D>(file, q, meta);
+      } catch (const InputError& e) {
+        err = e.what();
+      }
+    }
+    err = comm.first_message(err);
+    if (!err.empty()) throw InputError(err);
   };
 
   const double eps = 1e-12 * scene.end_time;
   if (!restart_meta) {
     if (opt.write_output)
-      sim.diagnostics(), vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+      sim.diagnostics(), vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
     next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
     next_probe = scene.probe_every;
   }
-  Progress progress(opt.quiet, sim.time(), scene.end_time);
+  Progress progress(opt.quiet || !root, sim.time(), scene.end_time);
   progress.start_steps(sim.step());
   std::string status = "completed";
   const auto t0 = Clock::now();
@@ -214,7 +244,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       }
       if (opt.write_output && sim.time() >= next_output - eps) {
         sim.diagnostics();
-        vtk->write(p, sim.time(), sim.step(), scene.output_fields);
+        vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
         next_output += scene.output_every > 0 ? scene.output_every : scene.end_time;
       }
       if (opt.write_output && scene.checkpoint_every > 0 && sim.time() >= next_ckpt - eps) {
@@ -227,12 +257,12 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   } catch (const RunAborted& e) {
     status = e.what();
     res.exit_code = 3;
-    fmt::print(stderr, "\nmonosph: run stopped: {}\n", e.what());
+    if (root) fmt::print(stderr, "\nmonosph: run stopped: {}\n", e.what());
     if (opt.write_output) {
       try {
         sim.diagnostics();
-        auto f = vtk->write(p, sim.time(), sim.step(), scene.output_fields);
-        fmt::print(stderr, "monosph: last state written to {}\n", f.string());
+        auto f = vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
+        if (root) fmt::print(stderr, "monosph: last state written to {}\n", f.string());
       } catch (const std::exception& w) {
         fmt::print(stderr, "monosph: could not write the last state: {}\n", w.what());
       }
@@ -241,7 +271,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   progress.update(sim.time(), sim.step(), true);
   progress.finish();
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  res.particles = p.size();
+  res.particles = static_cast<std::size_t>(comm.sum(static_cast<long>(sim.owned())));
   res.steps = sim.step() - step0;
   res.wall_seconds = wall;
   res.particle_steps_per_second = wall > 0 ? double(res.particles) * res.steps / wall : 0;
@@ -250,6 +280,9 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   if (!opt.write_output) return res;
   if (res.exit_code == 0) checkpoint(out / "final.h5");
   csv.close();
+  const auto* dec = sim.decomposition();
+  const double halo_bytes = dec ? comm.sum(dec->stats().halo_bytes) : 0.0;  // all ranks
+  if (!root) return res;
 
   nlohmann::json js;
   js["scene"] = scene.name;
@@ -261,7 +294,11 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["wall_seconds"] = wall;
   js["particle_steps_per_second"] = res.particle_steps_per_second;
   js["threads"] = omp_get_max_threads();
-  js["ranks"] = 1;
+  js["ranks"] = comm.size();
+  if (dec) {
+    js["halo_bytes_per_step"] = halo_bytes / std::max(1L, res.steps);
+    js["rebalances"] = dec->stats().rebalances;
+  }
   js["status"] = status;
   js["dp"] = scene.dp;
   js["h"] = scene.h();

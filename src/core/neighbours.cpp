@@ -46,13 +46,10 @@ std::array<int, D> Neighbours<D>::cell_of(const Vec<D>& x) const {
 }
 
 template <int D>
-long Neighbours<D>::build(Particles<D>& p, bool reorder) {
-  auto t0 = std::chrono::steady_clock::now();
-  const std::size_t n = p.size();
+long Neighbours<D>::wrap(Particles<D>& p) const {
   auto x = p.x();
-  // Wrap periodic axes; check the others.
   long bad = -1;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
     for (int a = 0; a < D; ++a) {
       const double len = dom_.hi[a] - dom_.lo[a];
       if (dom_.periodic[a]) {
@@ -65,7 +62,34 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder) {
       }
     }
   }
+  return bad;
+}
+
+template <int D>
+void Neighbours<D>::sort_by_cell(Particles<D>& p) const {
+  auto x = p.x();
+  std::size_t ncell = 1;
+  for (int a = 0; a < D; ++a) ncell *= nc_[a];
+  std::vector<std::size_t> key(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    auto c = cell_of(x[i]);
+    std::size_t k = 0, stride = 1;
+    for (int a = 0; a < D; ++a) k += c[a] * stride, stride *= nc_[a];
+    key[i] = k;
+  }
+  std::vector<int> order(p.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+  p.permute(order);
+}
+
+template <int D>
+long Neighbours<D>::build(Particles<D>& p, bool reorder) {
+  auto t0 = std::chrono::steady_clock::now();
+  const std::size_t n = p.size();
+  long bad = wrap(p);
   if (bad >= 0) return bad;
+  auto x = p.x();
 
   std::size_t ncell = 1;
   std::array<std::size_t, D> stride;

@@ -30,6 +30,11 @@ class Neighbours {
   // particle outside a non-periodic bound (nothing built then).
   long build(Particles<D>& p, bool reorder);
   bool needs_rebuild(Particles<D>& p) const;
+  // Wraps positions on periodic axes; returns -1 or the first particle outside a non-periodic
+  // bound.
+  long wrap(Particles<D>& p) const;
+  // Permutes the particles into cell order (MPI runs sort the owned ones before ghosts exist).
+  void sort_by_cell(Particles<D>& p) const;
 
   const Domain<D>& domain() const { return dom_; }
   double cutoff() const { return cutoff_; }

@@ -160,7 +160,13 @@ VtkSeries<D>::VtkSeries(fs::path dir, std::string basename)
 template <int D>
 fs::path VtkSeries<D>::write(const Particles<D>& p, double time, long step,
                              const std::vector<std::string>& extra_fields) {
-  const std::size_t n = p.size();
+  return write(p, p.size(), time, step, extra_fields);
+}
+
+template <int D>
+fs::path VtkSeries<D>::write(const Particles<D>& p, std::size_t owned, double time, long step,
+                             const std::vector<std::string>& extra_fields) {
+  const std::size_t n = owned;
   // Fields to write: output ones, then extras (checked first, so nothing is half written).
   std::vector<int> ks;
   for (std::size_t k = 0; k < p.fields().size(); ++k)
@@ -200,7 +206,9 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, double time, long step,
 
   char num[32];
   std::snprintf(num, sizeof(num), "%06ld", step);
-  const std::string file = basename_ + "_" + num + ".vtu";
+  const std::string stem = basename_ + "_" + num;
+  const std::string file =
+      ranks_ > 1 ? stem + "_p" + std::to_string(rank_) + ".vtu" : stem + ".vtu";
   const fs::path path = dir_ / file;
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   w->SetFileName(path.c_str());
@@ -212,6 +220,35 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, double time, long step,
   if (!w->Write() || w->GetErrorCode() != vtkErrorCode::NoError)
     cannot_write(dir_, vtk_error(w->GetErrorCode()));
 
+  if (ranks_ > 1) {
+    if (rank_ != 0) return path;
+    // The parallel file: array declarations (as in the pieces) and the piece list.
+    std::ostringstream x;
+    x << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PUnstructuredGrid "
+         "GhostLevel=\"0\">\n    <PPointData>\n";
+    for (int k : ks) {
+      const Field& f = p.field(k);
+      x << "      <PDataArray type=\"" << (f.type == FieldType::Real ? "Float64" : "Int64")
+        << "\" Name=\"" << xml_escape(f.name) << "\" NumberOfComponents=\""
+        << layout<D>(f.ncomp).size() << "\"/>\n";
+    }
+    x << "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"Float64\" "
+         "NumberOfComponents=\"3\"/>\n    </PPoints>\n";
+    for (int r = 0; r < ranks_; ++r)
+      x << "    <Piece Source=\"" << xml_escape(stem + "_p" + std::to_string(r) + ".vtu")
+        << "\"/>\n";
+    x << "  </PUnstructuredGrid>\n</VTKFile>\n";
+    const std::string pfile = stem + ".pvtu";
+    std::ofstream out(dir_ / pfile, std::ios::trunc);
+    out << x.str();
+    out.close();
+    if (!out) cannot_write(dir_, "cannot write " + pfile);
+    std::erase_if(frames_, [&](const Frame& f) { return f.file == pfile || f.time >= time; });
+    frames_.push_back({time, pfile});
+    write_pvd();
+    return dir_ / pfile;
+  }
   // A frame replaces any entry for the same file or a later time (rewrite after a restart).
   std::erase_if(frames_, [&](const Frame& f) { return f.file == file || f.time >= time; });
   frames_.push_back({time, file});
@@ -266,7 +303,7 @@ int VtkSeries<D>::restore_frames(double restart_time) {
     if (r.ec != std::errc()) continue;
     if (time <= restart_time) frames_.push_back({time, xml_unescape(mf[1].str())});
   }
-  write_pvd();
+  if (rank_ == 0) write_pvd();
   return frames();
 }
 

@@ -23,6 +23,11 @@ class VtkSeries {
   // or with a time >= its own, so the list stays ordered after a restart.
   std::filesystem::path write(const Particles<D>& p, double time, long step,
                               const std::vector<std::string>& extra_fields = {});
+  // Under MPI: each rank writes its first `owned` particles as basename_SSSSSS_pR.vtu, rank 0 a
+  // basename_SSSSSS.pvtu that lists the pieces, and the .pvd lists the .pvtu files.
+  void set_piece(int rank, int ranks) { rank_ = rank, ranks_ = ranks; }
+  std::filesystem::path write(const Particles<D>& p, std::size_t owned, double time, long step,
+                              const std::vector<std::string>& extra_fields = {});
 
   // For a restart: reads the existing .pvd (if any), keeps its entries with time <= restart_time
   // (a frame written at the checkpoint time is not written again), drops later ones and rewrites
@@ -43,6 +48,7 @@ class VtkSeries {
   std::filesystem::path dir_;
   std::string basename_;
   std::vector<Frame> frames_;
+  int rank_ = 0, ranks_ = 1;
 };
 
 extern template class VtkSeries<2>;

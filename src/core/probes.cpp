@@ -9,6 +9,18 @@
 
 namespace monosph {
 
+namespace {
+// The value of the rank with the smallest distance d2 (the lowest such rank on a tie).
+void nearest_value(const Comm& comm, double& d2, double& val) {
+  if (!comm.parallel()) return;
+  const double best = comm.min(d2);
+  const long who = comm.min(d2 == best ? long(comm.rank()) : long(comm.size()));
+  comm.bcast(std::span<double>(&val, 1), static_cast<int>(who));
+  d2 = best;
+}
+}  // namespace
+
+
 template <int D>
 struct Probes<D>::Item {
   ProbeSpec spec;
@@ -75,12 +87,15 @@ Probes<D>::Probes(Simulation<D>& sim) {
       double best = std::numeric_limits<double>::infinity();
       auto x = p.x();
       auto bd = p.body();
-      for (std::size_t i = 0; i < p.size(); ++i) {
+      for (std::size_t i = 0; i < sim.owned(); ++i) {
         if (it->body >= 0 && bd[i] != it->body) continue;
         double d2 = 0;
         for (int a = 0; a < D; ++a) d2 += (x[i][a] - s.point[a]) * (x[i][a] - s.point[a]);
         if (d2 < best) best = d2, it->id = p.id()[i];
       }
+      double id = static_cast<double>(it->id);
+      nearest_value(sim.comm(), best, id);
+      it->id = static_cast<std::int64_t>(id);
     }
     if (s.type == "momentum" || s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) columns_.push_back(s.name + "_" + ax[a]);
@@ -102,7 +117,8 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
   auto m = p.m();
   auto rho = p.rho();
   auto bd = p.body();
-  const std::size_t n = p.size();
+  const std::size_t n = sim.owned();  // sums over owned particles, then over the ranks
+  const Comm& comm = sim.comm();
   std::vector<double> out;
   for (auto& it : items_) {
     const auto& s = it->spec;
@@ -125,7 +141,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e += 0.5 * m[i] * v[i].squaredNorm() * weight(i);
-      out.push_back(e);
+      out.push_back(comm.sum(e));
     } else if (s.type == "elastic_energy") {
       // sum V (S:S / (4 mu) + p^2 / (2 K)) over solid particles
       const int ks = p.find("deviatoric_stress");
@@ -143,7 +159,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         }
         e += m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
       }
-      out.push_back(e);
+      out.push_back(comm.sum(e));
     } else if (s.type == "disorder") {
       // RMS over the (solid) particles of the per-particle disorder, in dp
       auto dis = p.template view<double>("disorder");
@@ -152,33 +168,37 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       std::size_t cnt = 0;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i) && ph[i] == kSolid) sum += dis[i] * dis[i], ++cnt;
+      sum = comm.sum(sum);
+      cnt = comm.sum(static_cast<long>(cnt));
       out.push_back(cnt ? std::sqrt(sum / cnt) : 0.0);
     } else if (s.type == "total_mass") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e += m[i];
-      out.push_back(e);
+      out.push_back(comm.sum(e));
     } else if (s.type == "momentum") {
       Vec<D> q = Vec<D>::Zero();
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) q += m[i] * v[i];
+      comm.sum(std::span<double>(q.data(), D));
       for (int a = 0; a < D; ++a) out.push_back(q[a]);
     } else if (s.type == "abs_momentum") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e += m[i] * v[i].norm();
-      out.push_back(e);
+      out.push_back(comm.sum(e));
     } else if (s.type == "max_speed") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e = std::max(e, v[i].norm());
-      out.push_back(e);
+      out.push_back(comm.max(e));
     } else if (s.type == "min_distance") {
-      out.push_back(sim.min_distance() / sim.dp());
+      out.push_back(comm.min(sim.min_distance()) / sim.dp());
     } else if (s.type == "extent") {  // max - min of a component; + dp for position (outer faces)
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) lo = std::min(lo, value(i)), hi = std::max(hi, value(i));
+      lo = comm.min(lo), hi = comm.max(hi);
       out.push_back(hi - lo + (s.field == "position" ? sim.dp() : 0.0));
     } else if (s.type == "field_max" || s.type == "field_min") {  // extreme of a field component
       const bool mx = s.type == "field_max";
@@ -186,7 +206,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
           mx ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e = mx ? std::max(e, value(i)) : std::min(e, value(i));
-      out.push_back(e);
+      out.push_back(mx ? comm.max(e) : comm.min(e));
     } else if (s.type == "integral" || s.type == "mean") {
       double sum = 0, vol = 0;
       for (std::size_t i = 0; i < n; ++i) {
@@ -195,6 +215,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         sum += vi * value(i) * weight(i);
         vol += vi;
       }
+      sum = comm.sum(sum), vol = comm.sum(vol);
       out.push_back(s.type == "mean" ? sum / vol : sum);
     } else if (s.type == "value_at") {
       double best = std::numeric_limits<double>::infinity(), val = 0;
@@ -204,13 +225,15 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         for (int a = 0; a < D; ++a) d2 += (x[i][a] - s.point[a]) * (x[i][a] - s.point[a]);
         if (d2 < best) best = d2, val = value(i);
       }
+      nearest_value(comm, best, val);
       out.push_back(val);
     } else if (s.type == "tracked") {
       auto ids = p.id();
-      double val = std::numeric_limits<double>::quiet_NaN();
+      double val = 0, found = 0;
       for (std::size_t i = 0; i < n; ++i)
-        if (ids[i] == it->id) val = value(i);
-      out.push_back(val);
+        if (ids[i] == it->id) val = value(i), found = 1;
+      val = comm.sum(val), found = comm.sum(found);  // one owner
+      out.push_back(found > 0 ? val : std::numeric_limits<double>::quiet_NaN());
     } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
       double sum = 0;
       const auto& rm = sim.removed_mass();
@@ -236,7 +259,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
           worst = std::max(worst, dp - pl.r[k].norm());
         }
       }
-      out.push_back(worst);
+      out.push_back(comm.max(worst));
     }
   }
   return out;

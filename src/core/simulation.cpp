@@ -23,6 +23,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     dom.periodic[a] = scene_.periodic[a];
   }
   nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
+  if (comm_.parallel())
+    dec_ = std::make_unique<Decomposition<D>>(comm_, dom, nb_.cutoff() + nb_.skin());
   std::vector<std::string> continua;
   for (const auto& b : scene_.bodies) {
     int g = b.phase == "fluid" ? -1 : b.phase == "rigid" ? -3 : -2;
@@ -186,6 +188,7 @@ void Simulation<D>::create_particles() {
     }
   }
   for (auto& m : modules_) m->on_create(*this);
+  set_replicated();
 }
 
 template <int D>
@@ -200,20 +203,48 @@ std::string Simulation<D>::describe(std::size_t i) {
 
 template <int D>
 void Simulation<D>::update_neighbours() {
-  if (!rebuild_requested_ && !nb_.needs_rebuild(p_)) return;
+  bool need = rebuild_requested_ || replicated_ || nb_.needs_rebuild(p_);
+  if (dec_) need = comm_.max(long(need)) > 0;
+  if (!need) return;
   rebuild_requested_ = false;
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
   for (auto& m : modules_) m->before_rebuild(*this);
+  const std::size_t own = owned();
+  if (dec_) {  // ghosts are made anew below
+    p_.resize(own);
+    if (remove_flag_.size() > own) remove_flag_.resize(own);
+  }
   if (!remove_flag_.empty()) {
     const auto& flag = remove_flag_;
     auto bd = p_.body();
     auto mass = p_.m();
+    std::vector<double> dm(removed_mass_.size(), 0.0);
     for (std::size_t i = 0; i < flag.size() && i < p_.size(); ++i)
-      if (flag[i]) removed_mass_[bd[i]] += mass[i];
+      if (flag[i]) dm[bd[i]] += mass[i];
+    comm_.sum(dm);
+    for (std::size_t b = 0; b < dm.size(); ++b) removed_mass_[b] += dm[b];
     p_.remove(remove_flag_);
     remove_flag_.clear();
   }
-  long bad = nb_.build(p_, reorder);
+  long bad;
+  if (dec_) {
+    if (replicated_) dec_->keep_share(p_), replicated_ = false;
+    bad = nb_.wrap(p_);
+    std::string msg;
+    if (bad >= 0) {
+      std::ostringstream os;
+      os << describe(bad) << " left the domain at t = " << t_;
+      msg = os.str();
+    }
+    msg = comm_.first_message(msg);
+    if (!msg.empty()) throw RunAborted(msg);
+    dec_->migrate(p_);
+    if (reorder) nb_.sort_by_cell(p_);
+    dec_->make_ghosts(p_);
+    bad = nb_.build(p_, false);
+  } else {
+    bad = nb_.build(p_, reorder);
+  }
   if (bad >= 0) {
     std::ostringstream os;
     os << describe(bad) << " left the domain at t = " << t_;
@@ -379,7 +410,8 @@ void Simulation<D>::update_pair_cache() {
   pl.first[n] = nb_.pairs();
   min_r_ = std::numeric_limits<double>::infinity();
   min_i_ = min_j_ = -1;
-  for (std::size_t i = 0; i < n; ++i)
+  const std::size_t own = owned();
+  for (std::size_t i = 0; i < own; ++i)
     if (rmin_[i] < min_r_) min_r_ = rmin_[i], min_i_ = static_cast<long>(i), min_j_ = jmin_[i];
 }
 
@@ -394,12 +426,16 @@ void Simulation<D>::compute_forces() {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) a[i] = gb_[bd[i]];
   for (auto& m : modules_) m->forces(*this);
+  exchange({p_.find("acceleration")});  // ghosts then kick and drift as their owners do
   if (kbc_ >= 0) {  // reaction of each constrained set: what holds it on its prescribed path
     auto bc = p_.template view<std::int64_t>(kbc_);
     auto mass = p_.m();
     for (auto& r : reactions_) r.setZero();
-    for (std::size_t i = 0; i < n; ++i)
+    const std::size_t own = owned();
+    for (std::size_t i = 0; i < own; ++i)
       if (bc[i]) reactions_[bc[i] - 1] -= mass[i] * a[i];
+    if (dec_)
+      for (auto& r : reactions_) comm_.sum(std::span<double>(r.data(), D));
   }
 }
 
@@ -409,7 +445,7 @@ double Simulation<D>::compute_dt() {
   auto a = p_.a();
   auto mt = p_.material();
   auto ph = p_.phase();
-  const std::size_t n = p_.size();
+  const std::size_t n = owned();
   const double h = kernel_.h();
   const auto& c = wave_speed_;
   double dt_ac = std::numeric_limits<double>::infinity(), dt_f = dt_ac;
@@ -423,7 +459,7 @@ double Simulation<D>::compute_dt() {
   double dt = std::min(scene_.cfl * dt_ac, scene_.force_factor * dt_f);
   for (auto& m : modules_) dt = std::min(dt, m->max_dt(*this));
   if (scene_.max_dt > 0) dt = std::min(dt, scene_.max_dt);
-  return dt;
+  return comm_.min(dt);
 }
 
 template <int D>
@@ -478,7 +514,7 @@ void Simulation<D>::check_guards() {
   auto v = p_.v();
   auto rho = p_.rho();
   auto mt = p_.material();
-  const std::size_t n = p_.size();
+  const std::size_t n = owned();
   long bad = -1;
   int why = 0;  // 1 non-finite, 2 too fast
 #pragma omp parallel for schedule(static) reduction(max : bad)
@@ -498,18 +534,16 @@ void Simulation<D>::check_guards() {
   os.precision(6);
   if (why == 1) {
     os << "non-finite state (position, velocity or density) at " << describe(bad) << ", t = " << t_;
-    throw RunAborted(os.str());
-  }
-  if (why == 2) {
+  } else if (why == 2) {
     os << describe(bad) << " moves at " << v[bad].norm() << " m/s, above " << scene_.max_mach
        << " of its wave speed " << scene_.materials[mt[bad]].wave_speed() << " m/s, at t = " << t_;
-    throw RunAborted(os.str());
-  }
-  if (min_i_ >= 0 && min_r_ < scene_.min_distance * scene_.dp) {
+  } else if (min_i_ >= 0 && min_r_ < scene_.min_distance * scene_.dp) {
     os << describe(min_i_) << " and particle id " << p_.id()[min_j_] << " are "
        << min_r_ / scene_.dp << " dp apart (limit " << scene_.min_distance << " dp) at t = " << t_;
-    throw RunAborted(os.str());
   }
+  // All ranks stop together with the message of the lowest rank that saw a problem.
+  const std::string msg = dec_ ? comm_.first_message(os.str()) : os.str();
+  if (!msg.empty()) throw RunAborted(msg);
 }
 
 template class Simulation<2>;

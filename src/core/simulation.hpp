@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "comm.hpp"
+#include "decomposition.hpp"
 #include "expression.hpp"
 #include "kernel.hpp"
 #include "neighbours.hpp"
@@ -138,6 +140,22 @@ class Simulation {
   // "particle id 12 (body 'water') at (x, y)".
   std::string describe(std::size_t i);
 
+  // Open MPI runs (see Decomposition): particles [0, owned()) belong to this rank, the rest are
+  // ghost copies. Loops that write a particle's own values may run over all; sums over
+  // particles (forces on bodies, probes, energies) take the owned ones and reduce over comm().
+  const Comm& comm() const { return comm_; }
+  std::size_t owned() const { return dec_ ? dec_->owned() : p_.size(); }
+  const Decomposition<D>* decomposition() const { return dec_.get(); }
+  // Refreshes ghost copies of fields a pass has just written (a no-op on one rank). Pair loops
+  // compute ghost values from incomplete neighbourhoods: a field read through neighbours later
+  // must be exchanged by the pass that wrote it.
+  void exchange(std::initializer_list<int> fields) {
+    if (dec_) dec_->exchange(p_, std::span<const int>(fields.begin(), fields.size()));
+  }
+  // Every rank holds the full particle set (fresh particles, a checkpoint just read): the next
+  // rebuild keeps each rank's share.
+  void set_replicated() { replicated_ = comm_.parallel(); }
+
  private:
   void kick(double h, double t_bc);
   void newmark_kick(double dt);  // second kick with time_step.newmark_gamma (docs/theory.md)
@@ -151,6 +169,9 @@ class Simulation {
   void apply_bc_velocity(double t);
 
   Scene scene_;
+  const Comm& comm_ = Comm::world();
+  std::unique_ptr<Decomposition<D>> dec_;
+  bool replicated_ = false;
   Particles<D> p_;
   Kernel<D> kernel_;
   Neighbours<D> nb_;

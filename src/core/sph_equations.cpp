@@ -66,6 +66,7 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
     shep[i] = s;  // Shepard sum, denominator of the normalised gradient (MMB Eq. 10)
     corr[i] = invert_correction<D>(b);
   }
+  sim.exchange({kshep_, kcorr_});  // the stress factor of neighbours uses both
 }
 
 template <int D>
@@ -118,6 +119,11 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
     drho[i] = -rho[i] * g.trace() + diff;  // MMB Eq. 11 (continuity + density diffusion)
     if (kgradv_ >= 0) gradv[i] = g;
   }
+  // Ghosts integrate density and stress (from grad v) as their owners do.
+  if (kgradv_ >= 0)
+    sim.exchange({p.find("density_rate"), kgradv_});
+  else
+    sim.exchange({p.find("density_rate")});
 }
 
 template <int D>
@@ -242,7 +248,7 @@ double SphEquations<D>::max_dt(Simulation<D>& sim) {
     return std::numeric_limits<double>::infinity();
   const double h = sim.kernel().h();
   double dt = std::numeric_limits<double>::infinity();
-  const std::size_t n = phimax_.size();
+  const std::size_t n = sim.owned();
 #pragma omp parallel for reduction(min : dt) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
     dt = std::min(dt, h / (cs_[i] + 0.6 * (alpha_[i] * cs_[i] + beta_[i] * phimax_[i])));

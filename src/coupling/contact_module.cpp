@@ -60,7 +60,8 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   auto mt = p.material();
   auto cl = p.template view<std::int64_t>(kcl_);
   auto cf = p.template view<Vec<D>>(kcf_);
-  const std::size_t n = p.size();
+  auto id = p.id();
+  const std::size_t n = p.size(), own = sim.owned();  // sums over owned particles (MPI)
   touch_.resize(n);
   near_.resize(n);
   const bool hertz = hertz_;
@@ -97,7 +98,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
                         (spec_.p2 + 1) * std::pow(q, spec_.p2)) /
                (re * re);
         }
-        w2 = std::max(w2, kn / m[i]);
+        if (i < own) w2 = std::max(w2, kn / m[i]);
       }
       if (pi == kRigid && pj != kRigid && r < release) near_[i] = 1;
       if (r >= dc) continue;
@@ -109,23 +110,33 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
         fn = std::max(0.0, fn - 2 * zeta * std::sqrt(kn * ms) * (v[i] - v[j]).dot(nrm));
       }
       f += fn * nrm;
-      worst = std::max(worst, dc - r);
-      if (static_cast<int>(i) < j) ++npairs;
+      if (i < own) {
+        worst = std::max(worst, dc - r);
+        if (id[i] < id[j]) ++npairs;  // each pair once, on any number of ranks
+      }
       if (pi == kRigid && pj != kRigid) touch_[i] = 1;
     }
     cf[i] = f;
     if (pi != kWall) a[i] += f / m[i];  // walls move as prescribed
   }
-  pairs_ = npairs;
-  omega2_ = w2;
-  max_overlap_ = worst;
+  const Comm& comm = sim.comm();
+  pairs_ = comm.sum(npairs);
+  omega2_ = comm.max(w2);
+  max_overlap_ = comm.max(worst);
   // Impacts: a cluster that touches a solid or wall body now and was free before (released only
   // when no member is within 1.1 d_c any more). Serial over the rigid particles, in index order.
   std::fill(touching_.begin(), touching_.end(), 0);
   std::fill(close_.begin(), close_.end(), 0);
   for (std::size_t i : rigid_) {
+    if (i >= own) continue;
     touching_[cl[i]] |= touch_[i];
     close_[cl[i]] |= near_[i];
+  }
+  if (comm.parallel()) {  // a cluster touches if any of its members does, on any rank
+    std::vector<double> tc(2 * touching_.size());
+    for (std::size_t c = 0; c < touching_.size(); ++c) tc[2 * c] = touching_[c], tc[2 * c + 1] = close_[c];
+    comm.max(tc);
+    for (std::size_t c = 0; c < touching_.size(); ++c) touching_[c] = tc[2 * c] > 0, close_[c] = tc[2 * c + 1] > 0;
   }
   for (std::size_t c = 0; c < in_contact_.size(); ++c) {
     if (touching_[c] && !in_contact_[c]) ++impacts_, in_contact_[c] = 1;
@@ -144,6 +155,7 @@ void ContactModule<D>::on_rebuild(Simulation<D>& sim) {
   for (std::size_t i = 0; i < p.size(); ++i)
     if (ph[i] == kRigid && cl[i] >= 0)
       rigid_.push_back(i), ncl = std::max<std::size_t>(ncl, cl[i] + 1);
+  ncl = static_cast<std::size_t>(sim.comm().max(static_cast<long>(ncl)));  // some on other ranks
   in_contact_.resize(ncl, 0);
   touching_.assign(ncl, 0);
   close_.assign(ncl, 0);

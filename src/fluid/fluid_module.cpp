@@ -147,6 +147,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
       lam[i] = 1;
     }
   }
+  sim.exchange({kgrad_, klam_, kpw_, kvw_});  // read through neighbours in rates and forces
 }
 
 template <int D>
@@ -182,6 +183,7 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
     // Sun et al. 2017, Eq. 3: continuity with the delta-SPH diffusive term.
     drho[i] = -rho[i] * div + delta * h * c0_[mt[i]] * diff;
   }
+  sim.exchange({p.find("density_rate")});
 }
 
 template <int D>
@@ -291,6 +293,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         a[i] += f / m[i];
     }
   }
+  sim.exchange({kshift_});  // ghosts shift in drift as their owners do
 }
 
 template <int D>
@@ -349,8 +352,9 @@ void FluidModule<D>::probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<d
   for (std::size_t b = 0; b < sim.bodies().size(); ++b)
     if (sim.bodies()[b].name == s.body) body = static_cast<int>(b);
   Vec<D> f = Vec<D>::Zero();
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < sim.owned(); ++i)
     if (ph[i] != kFluid && (body < 0 || bd[i] == body)) f += ff[i];
+  sim.comm().sum(std::span<double>(f.data(), D));
   for (int a = 0; a < D; ++a) out.push_back(f[a]);
 }
 

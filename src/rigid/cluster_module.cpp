@@ -216,15 +216,33 @@ void ClusterModule<D>::forces(Simulation<D>& sim) {
   auto a = p.a();
   auto m = p.m();
   auto off = p.template view<Vec<D>>(koff_);
+  const std::size_t own = sim.owned();  // members on other ranks add there (MPI)
   for (auto& c : c_) {
     const Mat<D> rot = rotation(c);
     c.force.setZero();
     c.torque.setZero();
     for (std::size_t k : c.members) {
+      if (k >= own) continue;
       const Vec<D> f = m[k] * a[k];
       c.force += f;
       c.torque += cross(pad3<D>(Vec<D>(rot * off[k])), pad3<D>(f));
     }
+  }
+  if (sim.comm().parallel()) {  // one reduction for all clusters; every rank integrates alike
+    std::vector<double> ft;
+    for (const auto& c : c_) {
+      for (int a = 0; a < D; ++a) ft.push_back(c.force[a]);
+      for (int a = 0; a < 3; ++a) ft.push_back(c.torque[a]);
+    }
+    sim.comm().sum(ft);
+    std::size_t q = 0;
+    for (auto& c : c_) {
+      for (int a = 0; a < D; ++a) c.force[a] = ft[q++];
+      for (int a = 0; a < 3; ++a) c.torque[a] = ft[q++];
+    }
+  }
+  for (auto& c : c_) {
+    const Mat<D> rot = rotation(c);
     const Vec<D> acc = c.force / c.mass;
     const Vec3 w = world_omega(c);
     Vec3 alpha;

@@ -97,7 +97,7 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
   auto m = p.m();
   auto ph = p.phase();
   auto mt = p.material();
-  const std::size_t n = p.size();
+  const std::size_t n = p.size(), own = sim.owned();
   const int ns = static_cast<int>(s_.size());
   const double R = radius_, depth = depth_, dt = sim.dt();
   // The per-particle contact stiffness entering max_dt is taken at an overlap of at least 0.1 R,
@@ -133,18 +133,23 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
       sum += f;
     }
     a[i] += sum / m[i];
+    if (i >= own) continue;  // ghost: its owner counts it
     // Contact frequency squared k/m with k = dF/d(delta) = 2 E* sqrt(R delta) (per depth in 2D).
     w2 = std::max(w2, hertz_stiffness(e_max[mt[i]], R, delta_max) / depth / m[i]);
   }
-  omega2_ = w2;
-  // Reactions: serial sums in particle order (the same for any thread count).
+  const Comm& comm = sim.comm();
+  omega2_ = comm.max(w2);
+  // Reactions: serial sums in particle order (the same for any thread count), over the owned
+  // particles and then the ranks.
   for (auto& s : s_) {
     s.reaction.setZero();
     s.contacts = 0;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < own; ++i) {
       if (s.force[i].squaredNorm() > 0) ++s.contacts;
       s.reaction -= s.force[i];
     }
+    comm.sum(std::span<double>(s.reaction.data(), D));
+    s.contacts = comm.sum(static_cast<long>(s.contacts));
   }
 }
 

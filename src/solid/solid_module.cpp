@@ -237,6 +237,11 @@ template <int D>
 void SolidModule<D>::sums(Simulation<D>& sim) {
   compute_deformation_gradient(sim);
   if (any_ls_) fit_deformation(sim, true);
+  // The hourglass forces read F_j (and the fit) of neighbours.
+  if (any_ls_)
+    sim.exchange({kF_, kFls_});
+  else
+    sim.exchange({kF_});
 }
 
 template <int D>
@@ -453,8 +458,8 @@ double SolidModule<D>::max_dt(Simulation<D>& sim) {
   // sits near omega dt = 4 CFL (about 1.2 at CFL 0.3). The spring limit dt = 3 CFL/omega_max keeps
   // omega dt <= 0.9 there, so that both together stay below sqrt(1.2^2 + 0.9^2) = 1.5.
   double w2 = 0;
-  const std::size_t n = omega2_.size();
-  if (n != sim.particles().size()) return std::numeric_limits<double>::infinity();
+  if (omega2_.size() != sim.particles().size()) return std::numeric_limits<double>::infinity();
+  const std::size_t n = sim.owned();
 #pragma omp parallel for reduction(max : w2) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) w2 = std::max(w2, omega2_[i]);
   if (w2 <= 0) return std::numeric_limits<double>::infinity();

@@ -1,0 +1,53 @@
+#pragma once
+// Comm: the ranks of an Open MPI run (one rank without mpirun). Every call is collective
+// unless said otherwise; with one rank they return their argument without touching MPI.
+#include <mpi.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace monosph {
+
+class Comm {
+ public:
+  // MPI_Init (thread level FUNNELED) when the process was started by mpirun; a no-op otherwise,
+  // so serial runs and tests never pay for MPI start-up.
+  static void init(int* argc, char*** argv);
+  static void finalize();
+  static Comm& world();
+  // Aborts every rank (an error on one rank that the others cannot see).
+  [[noreturn]] static void abort(int code);
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool parallel() const { return size_ > 1; }
+  bool root() const { return rank_ == 0; }
+  MPI_Comm raw() const { return comm_; }
+
+  double sum(double x) const;
+  double min(double x) const;
+  double max(double x) const;
+  long sum(long x) const;
+  long max(long x) const;
+  long min(long x) const;
+  void sum(std::span<double> x) const;  // in place, element-wise
+  void max(std::span<double> x) const;
+  void min(std::span<double> x) const;
+  void barrier() const;
+  void bcast(std::string& s, int root) const;
+  void bcast(std::span<double> x, int root) const;
+  // The message of the lowest rank whose `local` is not empty ("" if none).
+  std::string first_message(const std::string& local) const;
+  // send[r] goes to rank r; returns what each rank sent here, in rank order.
+  std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& send) const;
+  // All buffers on rank 0 (in rank order); empty elsewhere.
+  std::vector<std::vector<char>> gather(const std::vector<char>& mine) const;
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace monosph

@@ -1,0 +1,73 @@
+#pragma once
+// Decomposition<D>: the particles of an Open MPI run split into one region per rank by
+// recursive coordinate bisection on particle counts (Zoltan RCB), plus a ghost layer of width
+// support + skin. Locally, particles [0, owned) are this rank's and [owned, size) are ghost
+// copies of other ranks' particles, stored at their own (wrapped) positions: the periodic cell
+// list finds them across periodic borders exactly as in a serial run.
+//
+// Migration and ghost creation happen at neighbour rebuilds (all fields travel); between
+// rebuilds exchange() refreshes only the fields a pass has just written.
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "comm.hpp"
+#include "neighbours.hpp"
+#include "particles.hpp"
+
+struct Zoltan_Struct;
+
+namespace monosph {
+
+struct DecompositionStats {
+  long rebalances = 0, migrated = 0;  // partitions computed, particles that changed rank
+  double halo_bytes = 0;              // bytes sent by exchange() on this rank (cumulative)
+  double exchange_seconds = 0, rebuild_seconds = 0;
+};
+
+template <int D>
+class Decomposition {
+ public:
+  // imbalance: largest / mean owned count that triggers a new partition at a rebuild.
+  Decomposition(const Comm& comm, const Domain<D>& dom, double halo, double imbalance = 1.05);
+  ~Decomposition();
+  Decomposition(const Decomposition&) = delete;
+  Decomposition& operator=(const Decomposition&) = delete;
+
+  // Every rank holds the same full set (fresh start, restart): keep a contiguous block.
+  void keep_share(Particles<D>& p) const;
+  // p holds owned particles only (wrapped): new partition if needed, then particles move to
+  // the rank whose region contains them.
+  void migrate(Particles<D>& p);
+  // Appends the ghost copies (all fields) that this rank needs; records the exchange lists.
+  void make_ghosts(Particles<D>& p);
+  // Refreshes the ghost values of the given fields from their owners.
+  void exchange(Particles<D>& p, std::span<const int> fields);
+  std::size_t owned() const { return owned_; }
+  std::size_t ghosts() const { return ghosts_; }
+  const DecompositionStats& stats() const { return stats_; }
+  const Comm& comm() const { return comm_; }
+
+ private:
+  void partition(Particles<D>& p);
+  const Comm& comm_;
+  Domain<D> dom_;
+  double halo_, imbalance_;
+  Zoltan_Struct* zz_ = nullptr;
+  bool have_cuts_ = false;
+  std::size_t owned_ = 0, ghosts_ = 0;
+  std::vector<int> peers_;                   // ranks this one exchanges ghosts with
+  std::vector<std::vector<int>> send_;       // per peer: local indices sent
+  std::vector<std::size_t> recv_first_, recv_count_;  // per peer: ghost range
+  std::vector<std::vector<char>> sbuf_, rbuf_;
+  DecompositionStats stats_;
+};
+
+// Appends the fields of particles idx to buf (raw bytes, field by field).
+template <int D>
+void pack_particles(const Particles<D>& p, std::span<const int> idx, std::vector<char>& buf);
+// Appends the particles in buf to p (ids kept); returns how many.
+template <int D>
+std::size_t unpack_particles(Particles<D>& p, const std::vector<char>& buf);
+
+}  // namespace monosph
