@@ -39,6 +39,8 @@ int run_main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   cmd_run->add_option("--restart", run.restart, "continue from a checkpoint file (.h5)");
   cmd_run->add_flag("--quiet", run.quiet, "no progress line");
+  cmd_run->add_option("--steps", run.max_steps, "stop after this many steps (then write final.h5)")
+      ->check(CLI::PositiveNumber);
 
   std::string info_scene;
   std::vector<std::string> info_set;

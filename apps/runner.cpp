@@ -333,10 +333,12 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   std::ofstream(out / "summary.json") << js.dump(2) << "\n";
   if (!opt.quiet) {
     fmt::print(stderr,
-               "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {} "
+               "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} "
                "threads\n",
                status == "completed" ? "completed" : "stopped", res.particles, res.steps, wall,
-               res.particle_steps_per_second, omp_get_max_threads());
+               res.particle_steps_per_second,
+               comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "",
+               omp_get_max_threads());
     for (const auto& ref : scene.references) {
       const nlohmann::json& m = js["metrics"][ref.name];
       if (m["value"].is_null()) {

@@ -35,7 +35,7 @@ class Decomposition {
   Decomposition& operator=(const Decomposition&) = delete;
 
   // Every rank holds the same full set (fresh start, restart): keep a contiguous block.
-  void keep_share(Particles<D>& p) const;
+  void keep_share(Particles<D>& p);
   // p holds owned particles only (wrapped): new partition if needed, then particles move to
   // the rank whose region contains them.
   void migrate(Particles<D>& p);

@@ -209,12 +209,13 @@ void Simulation<D>::update_neighbours() {
   rebuild_requested_ = false;
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
   for (auto& m : modules_) m->before_rebuild(*this);
+  if (dec_ && replicated_) dec_->keep_share(p_), replicated_ = false;
   const std::size_t own = owned();
   if (dec_) {  // ghosts are made anew below
     p_.resize(own);
     if (remove_flag_.size() > own) remove_flag_.resize(own);
   }
-  if (!remove_flag_.empty()) {
+  if (!remove_flag_.empty() || dec_) {  // with MPI every rank joins the mass reduction
     const auto& flag = remove_flag_;
     auto bd = p_.body();
     auto mass = p_.m();
@@ -223,12 +224,11 @@ void Simulation<D>::update_neighbours() {
       if (flag[i]) dm[bd[i]] += mass[i];
     comm_.sum(dm);
     for (std::size_t b = 0; b < dm.size(); ++b) removed_mass_[b] += dm[b];
-    p_.remove(remove_flag_);
+    if (!remove_flag_.empty()) p_.remove(remove_flag_);
     remove_flag_.clear();
   }
   long bad;
   if (dec_) {
-    if (replicated_) dec_->keep_share(p_), replicated_ = false;
     bad = nb_.wrap(p_);
     std::string msg;
     if (bad >= 0) {

@@ -1,0 +1,189 @@
+// Open MPI runs against the serial run: the same fields (1e-8 of each field's largest value)
+// after 200 steps, the same particles removed, and restarts across rank counts.
+#include <gtest/gtest.h>
+
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include "../validation/run_helpers.hpp"
+#include "core/checkpoint.hpp"
+
+namespace monosph::test {
+namespace {
+
+Result mpirun(int ranks, const std::string& args) {
+  // --oversubscribe: 3 ranks on this 2-core machine; --bind-to none: no core pinning.
+  const std::string cmd = "timeout 300 " MONOSPH_MPIEXEC
+                          " --allow-run-as-root --oversubscribe --bind-to none -x OMP_NUM_THREADS=1"
+                          " -np " +
+                          std::to_string(ranks) + " " + MONOSPH_BIN + " " + args + " 2>&1";
+  Result r;
+  FILE* f = popen(cmd.c_str(), "r");
+  if (!f) return r;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, f)) r.output.append(buf, n);
+  int st = pclose(f);
+  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+// Every field of every particle (matched by id) within tol x the field's largest |value| (over
+// all its components) + 1e-13: a field that is zero by symmetry holds round-off only.
+template <int D>
+void expect_same_state(const std::string& a, const std::string& b, double tol = 1e-8) {
+  Particles<D> pa, pb;
+  auto ma = read_checkpoint<D>(a, pa);
+  auto mb = read_checkpoint<D>(b, pb);
+  EXPECT_DOUBLE_EQ(ma.time, mb.time);
+  EXPECT_EQ(ma.step, mb.step);
+  ASSERT_EQ(pa.size(), pb.size()) << "a different number of particles (removal differs)";
+  std::map<std::int64_t, std::size_t> where;
+  auto idb = pb.id();
+  for (std::size_t i = 0; i < pb.size(); ++i) where[idb[i]] = i;
+  auto ida = pa.id();
+  std::vector<std::size_t> map(pa.size());
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    auto it = where.find(ida[i]);
+    ASSERT_NE(it, where.end()) << "particle id " << ida[i] << " only in " << a;
+    map[i] = it->second;
+  }
+  for (const auto& f : pa.fields()) {
+    const auto& g = pb.field(f.name);
+    const int nc = f.ncomp;
+    if (f.type == FieldType::Int) {
+      for (std::size_t i = 0; i < pa.size(); ++i)
+        for (int c = 0; c < nc; ++c)
+          ASSERT_EQ(f.ints[i * nc + c], g.ints[map[i] * nc + c]) << f.name << " of id " << ida[i];
+      continue;
+    }
+    double scale = 0, diff = 0;
+    std::int64_t worst = -1;
+    for (std::size_t i = 0; i < pa.size(); ++i)
+      for (int c = 0; c < nc; ++c) {
+        const double x = f.real[i * nc + c], y = g.real[map[i] * nc + c];
+        scale = std::max(scale, std::abs(x));
+        if (!(std::abs(x - y) <= diff)) diff = std::abs(x - y), worst = ida[i];
+      }
+    EXPECT_LE(diff, tol * scale + 1e-13)
+        << f.name << ": largest difference " << diff << " (field scale " << scale
+        << ") at particle id " << worst;
+  }
+  EXPECT_EQ(ma.scalars.size(), mb.scalars.size());
+  for (const auto& [k, v] : ma.scalars) {
+    auto it = mb.scalars.find(k);
+    ASSERT_NE(it, mb.scalars.end()) << k;
+    EXPECT_NEAR(it->second, v, tol * std::max(1.0, std::abs(v))) << k;
+  }
+}
+
+struct Case {
+  std::string name, scene, set;
+  int dim = 2;
+};
+
+void serial_vs_ranks(const Case& c, std::vector<int> ranks) {
+  const std::string args = "run " + source(c.scene) + " --quiet --steps 200 --set output.every=1 " + c.set;
+  const std::string serial = out_dir("mpi_" + c.name + "_serial");
+  auto r = run_monosph(args + " --out " + serial);
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (int n : ranks) {
+    const std::string dir = out_dir("mpi_" + c.name + "_np" + std::to_string(n));
+    auto m = mpirun(n, args + " --out " + dir);
+    ASSERT_EQ(m.code, 0) << m.output;
+    auto js = summary(dir);
+    EXPECT_EQ(js["ranks"], n);
+    EXPECT_EQ(js["steps"], 200);
+    EXPECT_GT(js["halo_bytes_per_step"].get<double>(), 0);
+    SCOPED_TRACE(c.name + " on " + std::to_string(n) + " ranks");
+    if (c.dim == 2)
+      expect_same_state<2>(serial + "/final.h5", dir + "/final.h5");
+    else
+      expect_same_state<3>(serial + "/final.h5", dir + "/final.h5");
+    // The probe series (global reductions) agree as well.
+    auto ts = read_csv(serial + "/probes.csv"), tm = read_csv(dir + "/probes.csv");
+    ASSERT_EQ(ts.head, tm.head);
+    ASSERT_EQ(ts.cols[0].size(), tm.cols[0].size());
+    // Scale of a column: its largest |value| over the run and over the other components of the
+    // same vector probe (name_x, name_y...).
+    auto stem = [](const std::string& h) {
+      const auto n = h.size();
+      return n > 2 && h[n - 2] == '_' && std::string("xyz").find(h[n - 1]) != std::string::npos
+                 ? h.substr(0, n - 2)
+                 : h;
+    };
+    for (std::size_t k = 2; k < ts.head.size(); ++k) {
+      double scale = 0;
+      for (std::size_t l = 2; l < ts.head.size(); ++l)
+        if (stem(ts.head[l]) == stem(ts.head[k]))
+          for (double v : ts.cols[l]) scale = std::max(scale, std::abs(v));
+      for (std::size_t q = 0; q < ts.cols[k].size(); ++q)
+        EXPECT_NEAR(tm.cols[k][q], ts.cols[k][q], 1e-8 * scale + 1e-13)
+            << ts.head[k] << " at t = " << ts.cols[0][q];
+    }
+  }
+}
+
+TEST(Mpi, DamBreakFluidMatchesSerial) {
+  serial_vs_ranks({"dam_break", "cases/dam_break/scene.yaml", ""}, {2, 3});
+  // ParaView's view: the .pvd lists .pvtu frames whose pieces hold every particle once.
+  const std::string dir = MONOSPH_TEST_OUT "/mpi_dam_break_np3";
+  std::ifstream pvd(dir + "/dam_break.pvd");
+  std::string text((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("dam_break_000000.pvtu"), std::string::npos) << text;
+  vtkNew<vtkXMLGenericDataObjectReader> rd;
+  rd->SetFileName((dir + "/dam_break_000000.pvtu").c_str());
+  rd->Update();
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(rd->GetOutput());
+  ASSERT_NE(grid, nullptr);
+  EXPECT_EQ(grid->GetNumberOfPoints(), summary(dir)["particles"].get<long>());
+  EXPECT_NE(grid->GetPointData()->GetArray("free_surface"), nullptr);
+}
+
+TEST(Mpi, CuttingWithErosionMatchesSerialAndRemovesTheSameParticles) {
+  // A fast tool and a low failure strain: particles fail and are removed within 200 steps.
+  const std::string set =
+      "dp=4e-5 surfaces.0.velocity=[-300,0] materials.al.damage.D1=0.01 "
+      "materials.al.damage.D2=0 materials.al.damage.D3=0 materials.al.damage.min_failure_strain=0.01";
+  serial_vs_ranks({"cutting", "cases/metal_cutting/scene.yaml", set}, {2, 3});
+  auto t = read_csv(MONOSPH_TEST_OUT "/mpi_cutting_np3/probes.csv");
+  EXPECT_GT(t["removed_mass"].back(), 0) << "no particle was removed: the test proves nothing";
+}
+
+TEST(Mpi, AbrasiveFlowWithGrainsAcrossRanksMatchesSerial) {
+  // Periodic channel: fluid, hourglass-controlled PMMA, ten rigid grains with contact.
+  serial_vs_ranks({"afm", "cases/abrasive_flow_machining/scene.yaml", ""}, {2, 3});
+}
+
+TEST(Mpi, GrainSettlingMatchesSerial) {
+  serial_vs_ranks({"settle", "tests/scenes/grain_in_tank.yaml", ""}, {2});
+}
+
+TEST(Mpi, RestartOfTwoRanksOnOneAndThreeRanks) {
+  const std::string scene = source("cases/dam_break/scene.yaml");
+  const std::string opts = " --quiet --set output.every=1 output.checkpoint_every=0.004";
+  const std::string full = out_dir("mpi_restart_full");
+  auto a = mpirun(2, "run " + scene + " --out " + full + opts + " end_time=0.008");
+  ASSERT_EQ(a.code, 0) << a.output;
+  const std::string half = out_dir("mpi_restart_half");
+  auto b = mpirun(2, "run " + scene + " --out " + half + opts + " end_time=0.004");
+  ASSERT_EQ(b.code, 0) << b.output;
+  for (int n : {1, 3}) {
+    const std::string dir = out_dir("mpi_restart_on_" + std::to_string(n));
+    const std::string args =
+        "run --restart " + half + "/final.h5 --out " + dir + " --quiet --set end_time=0.008";
+    auto r = n == 1 ? run_monosph(args) : mpirun(n, args);
+    ASSERT_EQ(r.code, 0) << r.output;
+    SCOPED_TRACE("restart on " + std::to_string(n) + " ranks");
+    expect_same_state<2>(full + "/final.h5", dir + "/final.h5");
+  }
+}
+
+}  // namespace
+}  // namespace monosph::test
