@@ -161,6 +161,20 @@ TEST(Mpi, AbrasiveFlowWithGrainsAcrossRanksMatchesSerial) {
   serial_vs_ranks({"afm", "cases/abrasive_flow_machining/scene.yaml", ""}, {2, 3});
 }
 
+TEST(Mpi, TaylorBar3dMatchesSerial) {
+  // 3D: plasticity with heating on a rigid wall, 6 particles across the bar.
+  Case c{"taylor_3d", "cases/taylor_bar/scene.yaml", "dp=1.2658333333333333e-3", 3};
+  serial_vs_ranks(c, {2, 3});
+}
+
+TEST(Mpi, PeriodicAcousticWave3dMatchesSerial) {
+  // 3D, periodic on every axis, in a cube so that 4 ranks cut two axes: ghost images across
+  // periodic faces, edges and corners of the rank regions.
+  Case c{"acoustic_3d", "cases/acoustic_wave/scene_3d.yaml",
+         "dp=0.005 domain.max=[0.1,0.1,0.1] bodies.0.shape.box.max=[0.1,0.1,0.1]", 3};
+  serial_vs_ranks(c, {2, 3, 4});
+}
+
 TEST(Mpi, GrainSettlingMatchesSerial) {
   serial_vs_ranks({"settle", "tests/scenes/grain_in_tank.yaml", ""}, {2});
 }
