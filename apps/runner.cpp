@@ -280,8 +280,23 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   if (!opt.write_output) return res;
   if (res.exit_code == 0) checkpoint(out / "final.h5");
   csv.close();
+  // MPI figures (collective: before rank 0 goes on alone).
   const auto* dec = sim.decomposition();
-  const double halo_bytes = dec ? comm.sum(dec->stats().halo_bytes) : 0.0;  // all ranks
+  nlohmann::json mpi;
+  if (dec) {
+    const auto& st = dec->stats();
+    const double steps = std::max(1L, res.steps);
+    mpi["halo_bytes_per_step"] = comm.sum(st.halo_bytes) / steps;  // all ranks together
+    mpi["exchanges_per_step"] = st.exchanges / steps;
+    mpi["collectives_per_step"] = comm.collectives() / steps;
+    mpi["exchange_seconds_max"] = comm.max(st.exchange_seconds);
+    mpi["rebuild_seconds_max"] = comm.max(st.rebuild_seconds);
+    mpi["ghosts"] = comm.sum(static_cast<long>(dec->ghosts()));
+    mpi["owned_max"] = comm.max(static_cast<long>(dec->owned()));
+    mpi["peers_max"] = comm.max(st.peers);
+    mpi["rebalances"] = st.rebalances;
+    mpi["migrated"] = comm.sum(st.migrated);
+  }
   if (!root) return res;
 
   nlohmann::json js;
@@ -296,8 +311,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["threads"] = omp_get_max_threads();
   js["ranks"] = comm.size();
   if (dec) {
-    js["halo_bytes_per_step"] = halo_bytes / std::max(1L, res.steps);
-    js["rebalances"] = dec->stats().rebalances;
+    js["halo_bytes_per_step"] = mpi["halo_bytes_per_step"];
+    js["mpi"] = mpi;
   }
   js["status"] = status;
   js["dp"] = scene.dp;

@@ -16,12 +16,14 @@ bool started_by_mpirun() {
 template <class T>
 T reduce(const Comm& c, T x, MPI_Datatype t, MPI_Op op) {
   if (!c.parallel()) return x;
+  c.count_collective();
   T y;
   MPI_Allreduce(&x, &y, 1, t, op, c.raw());
   return y;
 }
 void reduce(const Comm& c, std::span<double> x, MPI_Op op) {
   if (!c.parallel() || x.empty()) return;
+  c.count_collective();
   MPI_Allreduce(MPI_IN_PLACE, x.data(), static_cast<int>(x.size()), MPI_DOUBLE, op, c.raw());
 }
 }  // namespace
@@ -65,6 +67,7 @@ void Comm::barrier() const {
 void Comm::bcast(std::string& s, int root) const {
   if (!parallel()) return;
   long n = static_cast<long>(s.size());
+  ++collectives_;
   MPI_Bcast(&n, 1, MPI_LONG, root, comm_);
   s.resize(n);
   if (n) MPI_Bcast(s.data(), static_cast<int>(n), MPI_CHAR, root, comm_);

@@ -25,6 +25,9 @@ class Comm {
   bool parallel() const { return size_ > 1; }
   bool root() const { return rank_ == 0; }
   MPI_Comm raw() const { return comm_; }
+  // Global reductions and broadcasts made so far (for the communication model).
+  long collectives() const { return collectives_; }
+  void count_collective() const { ++collectives_; }
 
   double sum(double x) const;
   double min(double x) const;
@@ -48,6 +51,7 @@ class Comm {
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, size_ = 1;
+  mutable long collectives_ = 0;
 };
 
 }  // namespace monosph

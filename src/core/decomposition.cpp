@@ -238,6 +238,7 @@ void Decomposition<D>::make_ghosts(Particles<D>& p) {
     recv_count_.push_back(unpack_particles(p, recv[r]));
   }
   ghosts_ = p.size() - owned_;
+  stats_.peers = static_cast<long>(peers_.size());
   sbuf_.resize(peers_.size());
   rbuf_.resize(peers_.size());
   stats_.rebuild_seconds +=
@@ -246,7 +247,9 @@ void Decomposition<D>::make_ghosts(Particles<D>& p) {
 
 template <int D>
 void Decomposition<D>::exchange(Particles<D>& p, std::span<const int> fields) {
-  if (peers_.empty() || fields.empty()) return;
+  if (fields.empty()) return;
+  ++stats_.exchanges;
+  if (peers_.empty()) return;
   auto t0 = std::chrono::steady_clock::now();
   std::size_t row = 0;  // bytes per particle
   for (int k : fields) row += static_cast<std::size_t>(p.field(k).ncomp) * 8;

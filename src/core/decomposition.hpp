@@ -21,6 +21,8 @@ namespace monosph {
 
 struct DecompositionStats {
   long rebalances = 0, migrated = 0;  // partitions computed, particles that changed rank
+  long exchanges = 0;                 // calls of exchange() (halo refreshes)
+  long peers = 0;                     // ranks exchanged with (last rebuild)
   double halo_bytes = 0;              // bytes sent by exchange() on this rank (cumulative)
   double exchange_seconds = 0, rebuild_seconds = 0;
 };

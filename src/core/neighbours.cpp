@@ -84,7 +84,7 @@ void Neighbours<D>::sort_by_cell(Particles<D>& p) const {
 }
 
 template <int D>
-long Neighbours<D>::build(Particles<D>& p, bool reorder) {
+long Neighbours<D>::build(Particles<D>& p, bool reorder, std::size_t rows) {
   auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = p.size();
   long bad = wrap(p);
@@ -180,8 +180,9 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder) {
   };
 
   start_.assign(n + 1, 0);
+  rows = std::min(rows, n);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < rows; ++i) {
     std::size_t cnt = 0;
     visit(i, [&](int, int) { ++cnt; });
     start_[i + 1] = cnt;
@@ -190,7 +191,7 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder) {
   nbr_.resize(start_[n]);
   code_.resize(start_[n]);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < rows; ++i) {
     std::size_t k = start_[i];
     visit(i, [&](int j, int code) {
       nbr_[k] = j;

@@ -4,6 +4,7 @@
 // particle sees all its neighbours, so pair loops write only their own particle.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "particles.hpp"
@@ -28,7 +29,10 @@ class Neighbours {
   // Wraps positions on periodic axes, bins particles and builds the pair lists. With reorder,
   // particles are first permuted into cell order (all fields). Returns -1, or the index of a
   // particle outside a non-periodic bound (nothing built then).
-  long build(Particles<D>& p, bool reorder);
+  // Only the first `rows` particles get a list (MPI: ghosts are neighbours but need none: the
+  // values their owners compute replace theirs).
+  long build(Particles<D>& p, bool reorder,
+             std::size_t rows = std::numeric_limits<std::size_t>::max());
   bool needs_rebuild(Particles<D>& p) const;
   // Wraps positions on periodic axes; returns -1 or the first particle outside a non-periodic
   // bound.

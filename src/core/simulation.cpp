@@ -241,7 +241,7 @@ void Simulation<D>::update_neighbours() {
     dec_->migrate(p_);
     if (reorder) nb_.sort_by_cell(p_);
     dec_->make_ghosts(p_);
-    bad = nb_.build(p_, false);
+    bad = nb_.build(p_, false, dec_->owned());
   } else {
     bad = nb_.build(p_, reorder);
   }

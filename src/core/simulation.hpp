@@ -141,14 +141,15 @@ class Simulation {
   std::string describe(std::size_t i);
 
   // Open MPI runs (see Decomposition): particles [0, owned()) belong to this rank, the rest are
-  // ghost copies. Loops that write a particle's own values may run over all; sums over
+  // ghost copies, which have no neighbour list. Loops that write a particle's own values may run
+  // over all; sums over
   // particles (forces on bodies, probes, energies) take the owned ones and reduce over comm().
   const Comm& comm() const { return comm_; }
   std::size_t owned() const { return dec_ ? dec_->owned() : p_.size(); }
   const Decomposition<D>* decomposition() const { return dec_.get(); }
   // Refreshes ghost copies of fields a pass has just written (a no-op on one rank). Pair loops
-  // compute ghost values from incomplete neighbourhoods: a field read through neighbours later
-  // must be exchanged by the pass that wrote it.
+  // leave ghosts without valid sums (they have no list): a field read through neighbours later,
+  // or used by a ghost's own per-particle update, must be exchanged by the pass that wrote it.
   void exchange(std::initializer_list<int> fields) {
     if (dec_) dec_->exchange(p_, std::span<const int>(fields.begin(), fields.size()));
   }
