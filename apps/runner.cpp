@@ -92,8 +92,9 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   assemble_modules(sim);
   double next_output = 0, next_probe = 0, next_ckpt = scene.checkpoint_every;
   if (restart_meta) {
-    read_checkpoint<D>(opt.restart, sim.particles());
-    sim.set_replicated();  // every rank read all particles: each keeps its share at init
+    // Each rank reads its share of the file (any number of ranks).
+    read_checkpoint<D>(opt.restart, sim.particles(), sim.comm().rank(), sim.comm().size());
+    sim.adopt_particles();
     sim.set_state(restart_meta->time, restart_meta->step, restart_meta->dt);
     auto get = [&](const char* k, double d) {
       auto it = restart_meta->scalars.find(k);
@@ -194,28 +195,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     meta.scalars["next_probe"] = next_probe;
     meta.scalars["next_checkpoint"] = next_ckpt;
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
-    if (!comm.parallel()) return write_checkpoint<D>(file, p, meta);
-    // MPI: rank 0 gathers the owned particles of every rank into one file, which a run on any
-    // number of ranks can restart from.
-    std::vector<int> idx(sim.owned());
-    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
-    std::vector<char> buf;
-    pack_particles<D>(p, idx, buf);
-    auto all = comm.gather(buf);
-    std::string err;
-    if (root) {
-      Particles<D> q = p;
-      q.resize(0);
-      for (const auto& b : all) unpack_particles<D>(q, b);
-      q.set_next_id(p.next_id());
-      try {
-        write_checkpoint<D>(file, q, meta);
-      } catch (const InputError& e) {
-        err = e.what();
-      }
-    }
-    err = comm.first_message(err);
-    if (!err.empty()) throw InputError(err);
+    write_checkpoint<D>(file, p, sim.owned(), meta, comm);
   };
 
   const double eps = 1e-12 * scene.end_time;

@@ -99,7 +99,21 @@ void put_strings(hid_t loc, const char* name, const std::vector<std::string>& v)
   if (!v.empty()) ck(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()), "write strings");
 }
 
-void put_field(hid_t group, const Field& f, std::size_t n) {
+// Writes the first `rows` rows of f as rows [row0, row0 + rows) of dataset d.
+void put_rows(hid_t d, const Field& f, std::size_t row0, std::size_t rows) {
+  if (rows == 0) return;
+  const bool real = f.type == FieldType::Real;
+  Hid sp(ck(H5Dget_space(d), "dataspace"), H5Sclose);
+  const hsize_t start[2] = {row0, 0}, count[2] = {rows, static_cast<hsize_t>(f.ncomp)};
+  ck(H5Sselect_hyperslab(sp, H5S_SELECT_SET, start, nullptr, count, nullptr), "hyperslab");
+  Hid mem(ck(H5Screate_simple(2, count, nullptr), "dataspace"), H5Sclose);
+  const void* data = real ? static_cast<const void*>(f.real.data()) : f.ints.data();
+  ck(H5Dwrite(d, real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, mem, sp, H5P_DEFAULT, data),
+     "cannot write field '" + f.name + "'");
+}
+
+// Dataset of n rows for f, holding f's first `rows` rows at the top.
+void put_field(hid_t group, const Field& f, std::size_t n, std::size_t rows) {
   const bool real = f.type == FieldType::Real;
   hsize_t dims[2] = {n, static_cast<hsize_t>(f.ncomp)};
   Hid sp(ck(H5Screate_simple(2, dims, nullptr), "dataspace"), H5Sclose);
@@ -107,12 +121,7 @@ void put_field(hid_t group, const Field& f, std::size_t n) {
                       H5P_DEFAULT, H5P_DEFAULT),
            "cannot create dataset for field '" + f.name + "'"),
         H5Dclose);
-  if (n > 0) {
-    const void* data = real ? static_cast<const void*>(f.real.data()) : f.ints.data();
-    ck(H5Dwrite(d, real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                data),
-       "cannot write field '" + f.name + "'");
-  }
+  put_rows(d, f, 0, rows);
   put_int(d, "ncomp", f.ncomp);
   put_int(d, "output", f.output ? 1 : 0);
 }
@@ -182,7 +191,10 @@ std::vector<double> get_doubles(hid_t loc, const char* name) {
 }
 
 // Reads /fields/<name>; n is the particle count (set by the first field, then checked).
-Field get_field(hid_t group, const std::string& name, std::size_t& n, bool first) {
+// Reads rows [n part / parts, n (part + 1) / parts) of the field (all rows with parts = 1);
+// n is the file's particle count.
+Field get_field(hid_t group, const std::string& name, std::size_t& n, bool first, int part,
+                int parts) {
   Hid d(ck(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "cannot open field '" + name + "'"),
         H5Dclose);
   Hid t(ck(H5Dget_type(d), "dataset type"), H5Tclose);
@@ -200,7 +212,8 @@ Field get_field(hid_t group, const std::string& name, std::size_t& n, bool first
     throw Fail{"field '" + name + "' has a bad shape"};
   if (first) n = dims[0];
   if (dims[0] != n) throw Fail{"field '" + name + "' has a different particle count"};
-  const std::size_t count = n * f.ncomp;
+  const hsize_t r0 = n * part / parts, r1 = n * (part + 1) / parts;
+  const std::size_t count = (r1 - r0) * f.ncomp;
   void* data;
   if (f.type == FieldType::Real) {
     f.real.resize(count);
@@ -209,15 +222,20 @@ Field get_field(hid_t group, const std::string& name, std::size_t& n, bool first
     f.ints.resize(count);
     data = f.ints.data();
   }
-  if (count > 0)
-    ck(H5Dread(d, f.type == FieldType::Real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, H5S_ALL,
-               H5S_ALL, H5P_DEFAULT, data),
+  if (count > 0) {
+    const hsize_t start[2] = {r0, 0}, rows[2] = {r1 - r0, static_cast<hsize_t>(f.ncomp)};
+    ck(H5Sselect_hyperslab(sp, H5S_SELECT_SET, start, nullptr, rows, nullptr), "hyperslab");
+    Hid mem(ck(H5Screate_simple(2, rows, nullptr), "dataspace"), H5Sclose);
+    ck(H5Dread(d, f.type == FieldType::Real ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, mem, sp,
+               H5P_DEFAULT, data),
        "cannot read field '" + name + "'");
+  }
   return f;
 }
 
+// A new file with n particles; the first `rows` of them from `fields` (all when rows = n).
 void write_file(const fs::path& tmp, const std::vector<Field>& fields, std::size_t n,
-                const CheckpointMeta& meta, std::int64_t next_id, int dim) {
+                std::size_t rows, const CheckpointMeta& meta, std::int64_t next_id, int dim) {
   Hid file(
       ck(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "cannot create the file"),
       H5Fclose);
@@ -255,7 +273,21 @@ void write_file(const fs::path& tmp, const std::vector<Field>& fields, std::size
   for (const auto& f : fields) {
     if (f.name.empty() || f.name.find('/') != std::string::npos || f.name == ".")
       throw Fail{"field name '" + f.name + "' cannot be stored"};
-    put_field(g, f, n);
+    put_field(g, f, n, rows);
+  }
+  g.close("close group");
+  file.close("cannot close the file");
+}
+
+// Rows [row0, row0 + rows) of every field of an existing file.
+void write_rows(const fs::path& tmp, const std::vector<Field>& fields, std::size_t row0,
+                std::size_t rows) {
+  Hid file(ck(H5Fopen(tmp.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "cannot open the file"), H5Fclose);
+  Hid g(ck(H5Gopen2(file, "fields", H5P_DEFAULT), "group fields"), H5Gclose);
+  for (const auto& f : fields) {
+    Hid d(ck(H5Dopen2(g, f.name.c_str(), H5P_DEFAULT), "cannot open field '" + f.name + "'"),
+          H5Dclose);
+    put_rows(d, f, row0, rows);
   }
   g.close("close group");
   file.close("cannot close the file");
@@ -277,7 +309,7 @@ void write_checkpoint(const fs::path& file, const Particles<D>& p, const Checkpo
   fs::path tmp = file;
   tmp += ".tmp";
   try {
-    write_file(tmp, p.fields(), p.size(), meta, std::max(meta.next_id, p.next_id()), D);
+    write_file(tmp, p.fields(), p.size(), p.size(), meta, std::max(meta.next_id, p.next_id()), D);
     sync_file(tmp);
     std::error_code ec;
     fs::rename(tmp, file, ec);
@@ -286,6 +318,52 @@ void write_checkpoint(const fs::path& file, const Particles<D>& p, const Checkpo
     std::error_code ec;
     fs::remove(tmp, ec);
     throw InputError("checkpoint: cannot write " + file.string() + ": " + e.what);
+  }
+}
+
+template <int D>
+void write_checkpoint(const fs::path& file, const Particles<D>& p, std::size_t owned,
+                      const CheckpointMeta& meta, const Comm& comm) {
+  if (!comm.parallel()) return write_checkpoint(file, p, meta);
+  quiet_hdf5();
+  // Rank r's rows follow those of ranks < r; the ranks write in turn into one file.
+  std::vector<double> counts(comm.size(), 0.0);
+  counts[comm.rank()] = static_cast<double>(owned);
+  comm.sum(counts);
+  std::size_t row0 = 0, total = 0;
+  for (int r = 0; r < comm.size(); ++r) {
+    if (r < comm.rank()) row0 += static_cast<std::size_t>(counts[r]);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  const std::int64_t next_id =
+      static_cast<std::int64_t>(comm.max(static_cast<double>(std::max(meta.next_id, p.next_id()))));
+  fs::path tmp = file;
+  tmp += ".tmp";
+  std::string err;
+  for (int r = 0; r < comm.size() && err.empty(); ++r) {
+    if (r == comm.rank()) {
+      try {
+        if (r == 0)
+          write_file(tmp, p.fields(), total, owned, meta, next_id, D);
+        else
+          write_rows(tmp, p.fields(), row0, owned);
+      } catch (const Fail& e) {
+        err = e.what;
+      }
+    }
+    err = comm.first_message(err);  // also the turn: rank r has closed the file
+  }
+  if (err.empty() && comm.root()) {
+    sync_file(tmp);
+    std::error_code ec;
+    fs::rename(tmp, file, ec);
+    if (ec) err = ec.message();
+  }
+  err = comm.first_message(err);
+  if (!err.empty()) {
+    std::error_code ec;
+    if (comm.root()) fs::remove(tmp, ec);
+    throw InputError("checkpoint: cannot write " + file.string() + ": " + err);
   }
 }
 
@@ -332,7 +410,7 @@ int checkpoint_dimension(const fs::path& file) {
 }
 
 template <int D>
-CheckpointMeta read_checkpoint(const fs::path& file, Particles<D>& p) {
+CheckpointMeta read_checkpoint(const fs::path& file, Particles<D>& p, int part, int parts) {
   CheckpointMeta meta;
   std::vector<Field> fields;
   std::size_t n = 0;
@@ -367,7 +445,7 @@ CheckpointMeta read_checkpoint(const fs::path& file, Particles<D>& p) {
                             H5P_DEFAULT),
          "field names");
       name.resize(len);
-      fields.push_back(get_field(g, name, n, i == 0));
+      fields.push_back(get_field(g, name, n, i == 0, part, parts));
     }
     auto pos = std::find_if(fields.begin(), fields.end(),
                             [](const Field& x) { return x.name == "position"; });
@@ -383,7 +461,7 @@ CheckpointMeta read_checkpoint(const fs::path& file, Particles<D>& p) {
     throw InputError(where(file) + e.what);
   }
 
-  p.resize(n);
+  p.resize(n * (part + 1) / parts - n * part / parts);
   for (auto& x : fields) {
     Field& dst = p.field(p.add_field(x.name, x.ncomp, x.type, x.output));
     dst.output = x.output;
@@ -395,8 +473,12 @@ CheckpointMeta read_checkpoint(const fs::path& file, Particles<D>& p) {
 }
 
 template void write_checkpoint<2>(const fs::path&, const Particles<2>&, const CheckpointMeta&);
+template void write_checkpoint<2>(const fs::path&, const Particles<2>&, std::size_t,
+                                  const CheckpointMeta&, const Comm&);
+template void write_checkpoint<3>(const fs::path&, const Particles<3>&, std::size_t,
+                                  const CheckpointMeta&, const Comm&);
 template void write_checkpoint<3>(const fs::path&, const Particles<3>&, const CheckpointMeta&);
-template CheckpointMeta read_checkpoint<2>(const fs::path&, Particles<2>&);
-template CheckpointMeta read_checkpoint<3>(const fs::path&, Particles<3>&);
+template CheckpointMeta read_checkpoint<2>(const fs::path&, Particles<2>&, int, int);
+template CheckpointMeta read_checkpoint<3>(const fs::path&, Particles<3>&, int, int);
 
 }  // namespace monosph

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "comm.hpp"
 #include "particles.hpp"
 
 namespace monosph {
@@ -25,11 +26,21 @@ template <int D>
 void write_checkpoint(const std::filesystem::path& file, const Particles<D>& p,
                       const CheckpointMeta& meta);
 
+// MPI: the first `owned` particles of every rank, in rank order, into one file that a run on any
+// number of ranks restarts from; the ranks write their rows in turn (no rank holds more than
+// its own). Collective; the same as above on one rank.
+template <int D>
+void write_checkpoint(const std::filesystem::path& file, const Particles<D>& p, std::size_t owned,
+                      const CheckpointMeta& meta, const Comm& comm);
+
 // Restores every field of p exactly (registering missing fields, resizing p, setting next_id)
 // and returns the metadata. Throws InputError naming the file if it is missing, not a monosph
 // checkpoint, damaged, or written with another dimension. On error p is left unchanged.
+// With parts > 1 only the rows [n part / parts, n (part + 1) / parts) are read (MPI: each rank
+// reads its share of the file).
 template <int D>
-CheckpointMeta read_checkpoint(const std::filesystem::path& file, Particles<D>& p);
+CheckpointMeta read_checkpoint(const std::filesystem::path& file, Particles<D>& p, int part = 0,
+                               int parts = 1);
 
 // The dimension (2 or 3) a checkpoint was written with; same errors as read_checkpoint.
 int checkpoint_dimension(const std::filesystem::path& file);

@@ -117,17 +117,6 @@ Decomposition<D>::~Decomposition() {
 }
 
 template <int D>
-void Decomposition<D>::keep_share(Particles<D>& p) {
-  const std::size_t n = p.size(), r = comm_.rank(), s = comm_.size();
-  const std::size_t a = n * r / s, b = n * (r + 1) / s;
-  std::vector<int> keep;
-  for (std::size_t i = a; i < b; ++i) keep.push_back(static_cast<int>(i));
-  p.permute(keep);
-  owned_ = p.size();
-  ghosts_ = 0;
-}
-
-template <int D>
 void Decomposition<D>::partition(Particles<D>& p) {
   ZData<D> data{&p};
   Zoltan_Set_Num_Obj_Fn(zz_, num_obj<D>, &data);

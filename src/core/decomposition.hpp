@@ -36,8 +36,8 @@ class Decomposition {
   Decomposition(const Decomposition&) = delete;
   Decomposition& operator=(const Decomposition&) = delete;
 
-  // Every rank holds the same full set (fresh start, restart): keep a contiguous block.
-  void keep_share(Particles<D>& p);
+  // Every rank holds a disjoint part of the particles (a fresh start): all of them are owned.
+  void adopt(Particles<D>& p) { owned_ = p.size(), ghosts_ = 0; }
   // p holds owned particles only (wrapped): new partition if needed, then particles move to
   // the rank whose region contains them.
   void migrate(Particles<D>& p);

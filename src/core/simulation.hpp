@@ -153,11 +153,14 @@ class Simulation {
   void exchange(std::initializer_list<int> fields) {
     if (dec_) dec_->exchange(p_, std::span<const int>(fields.begin(), fields.size()));
   }
-  // Every rank holds the full particle set (fresh particles, a checkpoint just read): the next
-  // rebuild keeps each rank's share.
-  void set_replicated() { replicated_ = comm_.parallel(); }
+  // The particles p holds now are this rank's own (its share of a checkpoint just read): the
+  // first rebuild balances the ranks.
+  void adopt_particles() {
+    if (dec_) dec_->adopt(p_);
+  }
 
  private:
+  void fill_bodies();  // create_particles without the modules' hooks
   void kick(double h, double t_bc);
   void newmark_kick(double dt);  // second kick with time_step.newmark_gamma (docs/theory.md)
   void keep_acceleration();      // a_n for the first Newmark step
@@ -172,7 +175,6 @@ class Simulation {
   Scene scene_;
   const Comm& comm_ = Comm::world();
   std::unique_ptr<Decomposition<D>> dec_;
-  bool replicated_ = false;
   Particles<D> p_;
   Kernel<D> kernel_;
   Neighbours<D> nb_;

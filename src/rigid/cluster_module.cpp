@@ -80,21 +80,30 @@ template <int D>
 void ClusterModule<D>::mass_properties(Simulation<D>& sim) {
   // Each member is a square (cube) of side dp: its own inertia m dp^2/6 about every axis is added
   // to the point-mass sum, so that a lattice-filled grain has the inertia of its filled cells.
+  // Sums over the members of every rank (MPI).
   auto& p = sim.particles();
   auto m = p.m();
   auto off = p.template view<Vec<D>>(koff_);
   const double own = sim.dp() * sim.dp() / 6.0;
-  for (auto& c : c_) {
-    c.mass = 0;
-    c.inertia = 0;
-    c.inertia_body.setZero();
-    for (std::size_t k : c.members) {
-      c.mass += m[k];
+  std::vector<double> s(11 * c_.size(), 0.0);
+  for (std::size_t c = 0; c < c_.size(); ++c) {
+    Mat3 ib = Mat3::Zero();
+    double mass = 0, inertia = 0;
+    for (std::size_t k : c_[c].members) {
+      mass += m[k];
       const Vec3 b = pad3<D>(off[k]);
-      c.inertia += m[k] * (b.squaredNorm() + own);
-      c.inertia_body += m[k] * ((b.squaredNorm() + own) * Mat3::Identity() - b * b.transpose());
+      inertia += m[k] * (b.squaredNorm() + own);
+      ib += m[k] * ((b.squaredNorm() + own) * Mat3::Identity() - b * b.transpose());
     }
-    if constexpr (D == 3) c.inertia_body_inv = c.inertia_body.inverse();
+    s[11 * c] = mass, s[11 * c + 1] = inertia;
+    for (int q = 0; q < 9; ++q) s[11 * c + 2 + q] = ib(q);
+  }
+  sim.comm().sum(s);
+  for (std::size_t c = 0; c < c_.size(); ++c) {
+    auto& cc = c_[c];
+    cc.mass = s[11 * c], cc.inertia = s[11 * c + 1];
+    for (int q = 0; q < 9; ++q) cc.inertia_body(q) = s[11 * c + 2 + q];
+    if constexpr (D == 3) cc.inertia_body_inv = cc.inertia_body.inverse();
   }
 }
 
@@ -127,39 +136,54 @@ void ClusterModule<D>::set_members(Simulation<D>& sim, bool positions) {
 
 template <int D>
 void ClusterModule<D>::on_create(Simulation<D>& sim) {
+  // MPI: each rank holds some members of a cluster; every sum below is reduced over the ranks,
+  // so that all ranks hold the same cluster state (and integrate it alike).
   auto& p = sim.particles();
   auto x = p.x();
   auto v = p.v();
   auto m = p.m();
   auto bd = p.body();
+  auto ids = p.id();
   auto cl = p.template view<std::int64_t>(kcl_);
   auto off = p.template view<Vec<D>>(koff_);
   const Scene& scene = sim.scene();
+  const Comm& comm = sim.comm();
   c_.clear();
   for (std::size_t i = 0; i < p.size(); ++i) cl[i] = -1;
+  std::string err;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     if (sim.bodies()[b].phase != kRigid) continue;
     const BodySpec& spec = scene.bodies[b];
     const std::size_t nparts = spec.cluster_per_part ? spec.shape.parts.size() : 1;
-    std::vector<long> id(nparts, -1);
-    const std::size_t first = c_.size();
+    std::vector<double> count(nparts, 0.0);
+    std::vector<std::size_t> part_of(p.size(), 0);
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (bd[i] != static_cast<std::int64_t>(b)) continue;
       std::size_t part = 0;
       if (spec.cluster_per_part) {
         const Point xi(x[i].data(), x[i].data() + D);
         while (part < nparts && !spec.shape.parts[part].contains(xi)) ++part;
-        if (part == nparts)
-          throw InputError("bodies[" + std::to_string(b) + "] (" + spec.name +
-                           ").clusters: a particle lies in no part (jitter moved it out)");
+        if (part == nparts) {
+          err = "bodies[" + std::to_string(b) + "] (" + spec.name +
+                ").clusters: a particle lies in no part (jitter moved it out)";
+          part = 0;
+        }
       }
-      if (id[part] < 0) {
-        id[part] = static_cast<long>(c_.size());
-        c_.emplace_back();
-        c_.back().body = static_cast<int>(b);
-      }
-      cl[i] = id[part];
+      part_of[i] = part;
+      count[part] += 1;
     }
+    comm.sum(count);
+    // One cluster per part that holds particles, numbered in part order.
+    std::vector<long> id(nparts, -1);
+    const std::size_t first = c_.size();
+    for (std::size_t q = 0; q < nparts; ++q) {
+      if (count[q] == 0) continue;
+      id[q] = static_cast<long>(c_.size());
+      c_.emplace_back();
+      c_.back().body = static_cast<int>(b);
+    }
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (bd[i] == static_cast<std::int64_t>(b)) cl[i] = id[part_of[i]];
     for (std::size_t c = first; c < c_.size(); ++c) {
       if (spec.angular_velocity.empty()) continue;
       if constexpr (D == 2)
@@ -169,34 +193,58 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
             Vec3(spec.angular_velocity[0], spec.angular_velocity[1], spec.angular_velocity[2]);
     }
   }
+  err = comm.first_message(err);
+  if (!err.empty()) throw InputError(err);
   collect_members(sim);
-  for (auto& c : c_) {
-    // Centre from positions unwrapped around the first member (a cluster may straddle a
-    // periodic boundary); offsets in the body frame (identity rotation at t = 0).
-    const Vec<D> x0 = x[c.members.front()];
-    Vec<D> sx = Vec<D>::Zero(), sv = Vec<D>::Zero();
-    double mass = 0;
-    for (std::size_t k : c.members) {
-      sx += m[k] * (x0 + min_image(x[k] - x0));
-      sv += m[k] * v[k];
-      mass += m[k];
+  const std::size_t nc = c_.size();
+  // Centre from positions unwrapped around the member with the lowest id (a cluster may straddle
+  // a periodic boundary); offsets in the body frame (identity rotation at t = 0).
+  std::vector<double> first_id(nc, 1e300);
+  for (std::size_t c = 0; c < nc; ++c)
+    for (std::size_t k : c_[c].members) first_id[c] = std::min(first_id[c], double(ids[k]));
+  comm.min(first_id);
+  std::vector<double> ref(nc * D, 0.0), sums(nc * (2 * D + 1), 0.0);
+  for (std::size_t c = 0; c < nc; ++c)
+    for (std::size_t k : c_[c].members)
+      if (double(ids[k]) == first_id[c])
+        for (int a = 0; a < D; ++a) ref[c * D + a] = x[k][a];
+  comm.sum(ref);  // one rank holds that member
+  for (std::size_t c = 0; c < nc; ++c) {
+    const Vec<D> x0 = Eigen::Map<const Vec<D>>(&ref[c * D]);
+    double* sm = &sums[c * (2 * D + 1)];
+    for (std::size_t k : c_[c].members) {
+      const Vec<D> xu = x0 + min_image(x[k] - x0);
+      for (int a = 0; a < D; ++a) sm[a] += m[k] * xu[a], sm[D + a] += m[k] * v[k][a];
+      sm[2 * D] += m[k];
     }
-    c.centre = sx / mass;
-    c.velocity = sv / mass;
-    for (std::size_t k : c.members) off[k] = x0 + min_image(x[k] - x0) - c.centre;
+  }
+  comm.sum(sums);
+  for (std::size_t c = 0; c < nc; ++c) {
+    auto& cc = c_[c];
+    const double* sm = &sums[c * (2 * D + 1)];
+    const Vec<D> x0 = Eigen::Map<const Vec<D>>(&ref[c * D]);
+    for (int a = 0; a < D; ++a) cc.centre[a] = sm[a] / sm[2 * D], cc.velocity[a] = sm[D + a] / sm[2 * D];
+    for (std::size_t k : cc.members) off[k] = x0 + min_image(x[k] - x0) - cc.centre;
   }
   mass_properties(sim);
   // The rigid projection of the initial velocity field: linear momentum (above) and angular
   // momentum sum_k m_k r_k x v_k about the centre, plus the given angular_velocity. A grain
   // started in a shear flow u(y) thus spins at about -u'/2, as the fluid around it.
-  for (auto& c : c_) {
+  std::vector<double> ls(3 * nc, 0.0);
+  for (std::size_t c = 0; c < nc; ++c) {
     Vec3 l = Vec3::Zero();
-    for (std::size_t k : c.members)
-      l += pad3<D>(off[k]).cross(pad3<D>(Vec<D>(m[k] * (v[k] - c.velocity))));
+    for (std::size_t k : c_[c].members)
+      l += pad3<D>(off[k]).cross(pad3<D>(Vec<D>(m[k] * (v[k] - c_[c].velocity))));
+    for (int a = 0; a < 3; ++a) ls[3 * c + a] = l[a];
+  }
+  comm.sum(ls);
+  for (std::size_t c = 0; c < nc; ++c) {
+    auto& cc = c_[c];
+    const Vec3 l(ls[3 * c], ls[3 * c + 1], ls[3 * c + 2]);
     if constexpr (D == 2)
-      c.omega[2] += l[2] / c.inertia;
+      cc.omega[2] += l[2] / cc.inertia;
     else
-      c.momentum = l + c.inertia_body * c.omega;  // q = identity
+      cc.momentum = l + cc.inertia_body * cc.omega;  // q = identity
   }
   set_members(sim, false);
 }
