@@ -271,6 +271,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     mpi["collectives_per_step"] = comm.collectives() / steps;
     mpi["exchange_seconds_max"] = comm.max(st.exchange_seconds);
     mpi["rebuild_seconds_max"] = comm.max(st.rebuild_seconds);
+    mpi["wait_seconds_max"] = comm.max(st.wait_seconds);
     mpi["ghosts"] = comm.sum(static_cast<long>(dec->ghosts()));
     mpi["owned_max"] = comm.max(static_cast<long>(dec->owned()));
     mpi["peers_max"] = comm.max(st.peers);

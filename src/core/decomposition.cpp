@@ -137,15 +137,24 @@ void Decomposition<D>::partition(Particles<D>& p) {
 
 template <int D>
 void Decomposition<D>::migrate(Particles<D>& p) {
-  auto t0 = std::chrono::steady_clock::now();
+  const auto tw = std::chrono::steady_clock::now();
   const long n = static_cast<long>(p.size());
-  const double mean = static_cast<double>(comm_.sum(n)) / comm_.size();
+  const double mean = static_cast<double>(comm_.sum(n)) / comm_.size();  // waits for all ranks
+  auto t0 = std::chrono::steady_clock::now();
+  stats_.wait_seconds += std::chrono::duration<double>(t0 - tw).count();
   if (!have_cuts_ || comm_.max(n) > imbalance_ * mean + 1) partition(p);
-  // Every particle goes to the rank whose region holds it (the cuts cover all of space).
+  // Every particle goes to the rank whose region holds it (the cuts cover all of space); those
+  // still inside this rank's box stay without a query.
   auto x = p.x();
   std::vector<std::vector<int>> out(comm_.size());
   std::vector<char> stay(n, 1);
+  int ndim;
+  double lo[3], hi[3];
+  Zoltan_RCB_Box(zz_, comm_.rank(), &ndim, &lo[0], &lo[1], &lo[2], &hi[0], &hi[1], &hi[2]);
   for (long i = 0; i < n; ++i) {
+    bool inside = true;
+    for (int a = 0; a < D; ++a) inside = inside && x[i][a] > lo[a] && x[i][a] < hi[a];
+    if (inside) continue;
     double c[3] = {0, 0, 0};
     for (int a = 0; a < D; ++a) c[a] = x[i][a];
     int proc = comm_.rank();
@@ -160,7 +169,7 @@ void Decomposition<D>::migrate(Particles<D>& p) {
   std::vector<int> keep;
   for (long i = 0; i < n; ++i)
     if (stay[i]) keep.push_back(static_cast<int>(i));
-  if (moved) p.permute(keep);
+  if (moved) p.compact(keep);
   for (const auto& b : recv) unpack_particles(p, b);
   stats_.migrated += moved;
   owned_ = p.size();
@@ -264,7 +273,10 @@ void Decomposition<D>::exchange(Particles<D>& p, std::span<const int> fields) {
     MPI_Isend(b.data(), static_cast<int>(b.size()), MPI_BYTE, peers_[q], tag, comm_.raw(),
               &req[peers_.size() + q]);
   }
+  const auto tw = std::chrono::steady_clock::now();
   MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
+  stats_.wait_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - tw).count();
   for (std::size_t q = 0; q < peers_.size(); ++q) {
     const char* in = rbuf_[q].data();
     for (int k : fields) {

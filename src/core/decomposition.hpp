@@ -25,6 +25,7 @@ struct DecompositionStats {
   long peers = 0;                     // ranks exchanged with (last rebuild)
   double halo_bytes = 0;              // bytes sent by exchange() on this rank (cumulative)
   double exchange_seconds = 0, rebuild_seconds = 0;
+  double wait_seconds = 0;  // in MPI waits of both: transfer plus waiting for slower ranks
 };
 
 template <int D>

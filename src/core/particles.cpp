@@ -1,5 +1,6 @@
 #include "particles.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 namespace monosph {
@@ -85,7 +86,10 @@ std::size_t Particles<D>::append(std::size_t n) {
 namespace {
 template <class T>
 void permute_vec(std::vector<T>& data, int nc, const std::vector<int>& order) {
-  std::vector<T> out(order.size() * nc);
+  // Capacity as before: ghosts appended after a rebuild (MPI) then fit without reallocating.
+  std::vector<T> out;
+  out.reserve(std::max(data.capacity(), order.size() * nc));
+  out.resize(order.size() * nc);
   for (std::size_t i = 0; i < order.size(); ++i)
     for (int c = 0; c < nc; ++c)
       out[i * nc + c] = data[static_cast<std::size_t>(order[i]) * nc + c];
@@ -105,13 +109,33 @@ void Particles<D>::permute(const std::vector<int>& order) {
 }
 
 template <int D>
+void Particles<D>::compact(const std::vector<int>& keep) {
+  // keep is increasing, so keep[i] >= i: moving rows down in order never overwrites a row that
+  // is still to be moved. No allocation (a rebuild under MPI does this every time).
+  for (auto& f : fields_) {
+    const std::size_t nc = f.ncomp;
+    auto move_rows = [&](auto& data) {
+      for (std::size_t i = 0; i < keep.size(); ++i)
+        if (static_cast<std::size_t>(keep[i]) != i)
+          std::copy_n(data.begin() + keep[i] * nc, nc, data.begin() + i * nc);
+      data.resize(keep.size() * nc);
+    };
+    if (f.type == FieldType::Real)
+      move_rows(f.real);
+    else
+      move_rows(f.ints);
+  }
+  n_ = keep.size();
+}
+
+template <int D>
 std::size_t Particles<D>::remove(const std::vector<char>& flag) {
   std::vector<int> keep;
   keep.reserve(n_);
   for (std::size_t i = 0; i < n_; ++i)
     if (!flag[i]) keep.push_back(static_cast<int>(i));
   std::size_t removed = n_ - keep.size();
-  if (removed) permute(keep);
+  if (removed) compact(keep);
   return removed;
 }
 

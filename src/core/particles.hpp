@@ -35,6 +35,8 @@ class Particles {
   void resize(std::size_t n);
   // new[i] = old[order[i]] for every field.
   void permute(const std::vector<int>& order);
+  // Keeps the particles keep[0] < keep[1] < ... in that order, in place.
+  void compact(const std::vector<int>& keep);
   // Removes flagged particles, keeping the order of the others. Returns how many were removed.
   std::size_t remove(const std::vector<char>& flag);
 
