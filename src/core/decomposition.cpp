@@ -58,6 +58,7 @@ namespace {
 template <int D>
 struct ZData {
   Particles<D>* p;
+  const std::vector<float>* work;
 };
 template <int D>
 int num_obj(void* data, int* ierr) {
@@ -65,11 +66,15 @@ int num_obj(void* data, int* ierr) {
   return static_cast<int>(static_cast<ZData<D>*>(data)->p->size());
 }
 template <int D>
-void obj_list(void* data, int, int, ZOLTAN_ID_PTR gid, ZOLTAN_ID_PTR lid, int, float*, int* ierr) {
+void obj_list(void* data, int, int, ZOLTAN_ID_PTR gid, ZOLTAN_ID_PTR lid, int, float* w,
+              int* ierr) {
   auto& p = *static_cast<ZData<D>*>(data)->p;
+  const auto& work = *static_cast<ZData<D>*>(data)->work;
   auto id = p.id();
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < p.size(); ++i) {
     gid[i] = static_cast<ZOLTAN_ID_TYPE>(id[i]), lid[i] = static_cast<ZOLTAN_ID_TYPE>(i);
+    w[i] = i < work.size() ? work[i] : 1.0f;
+  }
   *ierr = ZOLTAN_OK;
 }
 template <int D>
@@ -103,7 +108,7 @@ Decomposition<D>::Decomposition(const Comm& comm, const Domain<D>& dom, double h
   Zoltan_Set_Param(zz_, "LB_METHOD", "RCB");
   Zoltan_Set_Param(zz_, "NUM_GID_ENTRIES", "1");
   Zoltan_Set_Param(zz_, "NUM_LID_ENTRIES", "1");
-  Zoltan_Set_Param(zz_, "OBJ_WEIGHT_DIM", "0");
+  Zoltan_Set_Param(zz_, "OBJ_WEIGHT_DIM", "1");  // balance work, not particle counts
   Zoltan_Set_Param(zz_, "RETURN_LISTS", "EXPORT");
   Zoltan_Set_Param(zz_, "KEEP_CUTS", "1");  // for Point_Assign and Box_Assign
   Zoltan_Set_Param(zz_, "RCB_REUSE", "1");  // start from the previous cuts: little migration
@@ -117,8 +122,8 @@ Decomposition<D>::~Decomposition() {
 }
 
 template <int D>
-void Decomposition<D>::partition(Particles<D>& p) {
-  ZData<D> data{&p};
+void Decomposition<D>::partition(Particles<D>& p, const std::vector<float>& work) {
+  ZData<D> data{&p, &work};
   Zoltan_Set_Num_Obj_Fn(zz_, num_obj<D>, &data);
   Zoltan_Set_Obj_List_Fn(zz_, obj_list<D>, &data);
   Zoltan_Set_Num_Geom_Fn(zz_, num_geom<D>, &data);
@@ -136,13 +141,16 @@ void Decomposition<D>::partition(Particles<D>& p) {
 }
 
 template <int D>
-void Decomposition<D>::migrate(Particles<D>& p) {
+void Decomposition<D>::migrate(Particles<D>& p, const std::vector<float>& work) {
   const auto tw = std::chrono::steady_clock::now();
   const long n = static_cast<long>(p.size());
-  const double mean = static_cast<double>(comm_.sum(n)) / comm_.size();  // waits for all ranks
+  double mine = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) mine += i < work.size() ? work[i] : 1.0;
+  const double mean = comm_.sum(mine) / comm_.size();  // waits for all ranks
   auto t0 = std::chrono::steady_clock::now();
   stats_.wait_seconds += std::chrono::duration<double>(t0 - tw).count();
-  if (!have_cuts_ || comm_.max(n) > imbalance_ * mean + 1) partition(p);
+  stats_.imbalance = mean > 0 ? comm_.max(mine) / mean : 1.0;
+  if (!have_cuts_ || stats_.imbalance > imbalance_) partition(p, work);
   // Every particle goes to the rank whose region holds it (the cuts cover all of space); those
   // still inside this rank's box stay without a query.
   auto x = p.x();

@@ -25,7 +25,8 @@ struct DecompositionStats {
   long peers = 0;                     // ranks exchanged with (last rebuild)
   double halo_bytes = 0;              // bytes sent by exchange() on this rank (cumulative)
   double exchange_seconds = 0, rebuild_seconds = 0;
-  double wait_seconds = 0;  // in MPI waits of both: transfer plus waiting for slower ranks
+  double wait_seconds = 0;
+  double imbalance = 1;  // largest / mean work at the last rebuild, before re-partitioning  // in MPI waits of both: transfer plus waiting for slower ranks
 };
 
 template <int D>
@@ -39,9 +40,10 @@ class Decomposition {
 
   // Every rank holds a disjoint part of the particles (a fresh start): all of them are owned.
   void adopt(Particles<D>& p) { owned_ = p.size(), ghosts_ = 0; }
-  // p holds owned particles only (wrapped): new partition if needed, then particles move to
-  // the rank whose region contains them.
-  void migrate(Particles<D>& p);
+  // p holds owned particles only (wrapped), work their costs: a new partition when the largest
+  // rank's work passes `imbalance` x the mean, then particles move to the rank whose region
+  // contains them.
+  void migrate(Particles<D>& p, const std::vector<float>& work);
   // Appends the ghost copies (all fields) that this rank needs; records the exchange lists.
   void make_ghosts(Particles<D>& p);
   // Refreshes the ghost values of the given fields from their owners.
@@ -52,7 +54,7 @@ class Decomposition {
   const Comm& comm() const { return comm_; }
 
  private:
-  void partition(Particles<D>& p);
+  void partition(Particles<D>& p, const std::vector<float>& work);
   const Comm& comm_;
   Domain<D> dom_;
   double halo_, imbalance_;

@@ -269,9 +269,14 @@ void Simulation<D>::update_neighbours() {
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
   for (auto& m : modules_) m->before_rebuild(*this);
   const std::size_t own = owned();
+  std::vector<float> work;  // MPI: cost of each owned particle, for the balance
   if (dec_) {  // ghosts are made anew below
     p_.resize(own);
     if (remove_flag_.size() > own) remove_flag_.resize(own);
+    // Pair loops dominate a step: a particle costs about 1 + its pairs in the support.
+    work.assign(own, 1.0f);
+    if (pairs_.count.size() >= own)
+      for (std::size_t i = 0; i < own; ++i) work[i] += static_cast<float>(pairs_.count[i]);
   }
   if (!remove_flag_.empty() || dec_) {  // with MPI every rank joins the mass reduction
     const auto& flag = remove_flag_;
@@ -282,7 +287,10 @@ void Simulation<D>::update_neighbours() {
       if (flag[i]) dm[bd[i]] += mass[i];
     comm_.sum(dm);
     for (std::size_t b = 0; b < dm.size(); ++b) removed_mass_[b] += dm[b];
-    if (!remove_flag_.empty()) p_.remove(remove_flag_);
+    if (!remove_flag_.empty()) {
+      if (dec_) std::erase_if(work, [&, i = std::size_t(0)](float) mutable { return flag[i++]; });
+      p_.remove(remove_flag_);
+    }
     remove_flag_.clear();
   }
   long bad;
@@ -296,7 +304,7 @@ void Simulation<D>::update_neighbours() {
     }
     msg = comm_.first_message(msg);
     if (!msg.empty()) throw RunAborted(msg);
-    dec_->migrate(p_);
+    dec_->migrate(p_, work);
     if (reorder) nb_.sort_by_cell(p_);
     dec_->make_ghosts(p_);
     bad = nb_.build(p_, false, dec_->owned());
