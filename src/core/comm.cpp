@@ -43,22 +43,42 @@ void Comm::finalize() {
   g_mpi = false;
 }
 
-Comm& Comm::world() { return g_world; }
+Comm& Comm::world() {
+  return g_world;
+}
 
 void Comm::abort(int code) {
   if (g_mpi) MPI_Abort(MPI_COMM_WORLD, code);
   std::exit(code);
 }
 
-double Comm::sum(double x) const { return reduce(*this, x, MPI_DOUBLE, MPI_SUM); }
-double Comm::min(double x) const { return reduce(*this, x, MPI_DOUBLE, MPI_MIN); }
-double Comm::max(double x) const { return reduce(*this, x, MPI_DOUBLE, MPI_MAX); }
-long Comm::sum(long x) const { return reduce(*this, x, MPI_LONG, MPI_SUM); }
-long Comm::max(long x) const { return reduce(*this, x, MPI_LONG, MPI_MAX); }
-long Comm::min(long x) const { return reduce(*this, x, MPI_LONG, MPI_MIN); }
-void Comm::sum(std::span<double> x) const { reduce(*this, x, MPI_SUM); }
-void Comm::max(std::span<double> x) const { reduce(*this, x, MPI_MAX); }
-void Comm::min(std::span<double> x) const { reduce(*this, x, MPI_MIN); }
+double Comm::sum(double x) const {
+  return reduce(*this, x, MPI_DOUBLE, MPI_SUM);
+}
+double Comm::min(double x) const {
+  return reduce(*this, x, MPI_DOUBLE, MPI_MIN);
+}
+double Comm::max(double x) const {
+  return reduce(*this, x, MPI_DOUBLE, MPI_MAX);
+}
+long Comm::sum(long x) const {
+  return reduce(*this, x, MPI_LONG, MPI_SUM);
+}
+long Comm::max(long x) const {
+  return reduce(*this, x, MPI_LONG, MPI_MAX);
+}
+long Comm::min(long x) const {
+  return reduce(*this, x, MPI_LONG, MPI_MIN);
+}
+void Comm::sum(std::span<double> x) const {
+  reduce(*this, x, MPI_SUM);
+}
+void Comm::max(std::span<double> x) const {
+  reduce(*this, x, MPI_MAX);
+}
+void Comm::min(std::span<double> x) const {
+  reduce(*this, x, MPI_MIN);
+}
 
 void Comm::barrier() const {
   if (parallel()) MPI_Barrier(comm_);

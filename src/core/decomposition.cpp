@@ -83,8 +83,8 @@ int num_geom(void*, int* ierr) {
   return D;
 }
 template <int D>
-void geom_multi(void* data, int, int, int num, ZOLTAN_ID_PTR, ZOLTAN_ID_PTR lid, int,
-                double* g, int* ierr) {
+void geom_multi(void* data, int, int, int num, ZOLTAN_ID_PTR, ZOLTAN_ID_PTR lid, int, double* g,
+                int* ierr) {
   auto x = static_cast<ZData<D>*>(data)->p->x();
   for (int q = 0; q < num; ++q)
     for (int a = 0; a < D; ++a) g[q * D + a] = x[lid[q]][a];

@@ -26,7 +26,8 @@ struct DecompositionStats {
   double halo_bytes = 0;              // bytes sent by exchange() on this rank (cumulative)
   double exchange_seconds = 0, rebuild_seconds = 0;
   double wait_seconds = 0;
-  double imbalance = 1;  // largest / mean work at the last rebuild, before re-partitioning  // in MPI waits of both: transfer plus waiting for slower ranks
+  double imbalance = 1;  // largest / mean work at the last rebuild, before re-partitioning  // in
+                         // MPI waits of both: transfer plus waiting for slower ranks
 };
 
 template <int D>
@@ -61,8 +62,8 @@ class Decomposition {
   Zoltan_Struct* zz_ = nullptr;
   bool have_cuts_ = false;
   std::size_t owned_ = 0, ghosts_ = 0;
-  std::vector<int> peers_;                   // ranks this one exchanges ghosts with
-  std::vector<std::vector<int>> send_;       // per peer: local indices sent
+  std::vector<int> peers_;                            // ranks this one exchanges ghosts with
+  std::vector<std::vector<int>> send_;                // per peer: local indices sent
   std::vector<std::size_t> recv_first_, recv_count_;  // per peer: ghost range
   std::vector<std::vector<char>> sbuf_, rbuf_;
   DecompositionStats stats_;

@@ -20,7 +20,6 @@ void nearest_value(const Comm& comm, double& d2, double& val) {
 }
 }  // namespace
 
-
 template <int D>
 struct Probes<D>::Item {
   ProbeSpec spec;

@@ -270,7 +270,7 @@ void Simulation<D>::update_neighbours() {
   for (auto& m : modules_) m->before_rebuild(*this);
   const std::size_t own = owned();
   std::vector<float> work;  // MPI: cost of each owned particle, for the balance
-  if (dec_) {  // ghosts are made anew below
+  if (dec_) {               // ghosts are made anew below
     p_.resize(own);
     if (remove_flag_.size() > own) remove_flag_.resize(own);
     // Pair loops dominate a step: a particle costs about 1 + its pairs in the support.

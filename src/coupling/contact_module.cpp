@@ -134,9 +134,11 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   }
   if (comm.parallel()) {  // a cluster touches if any of its members does, on any rank
     std::vector<double> tc(2 * touching_.size());
-    for (std::size_t c = 0; c < touching_.size(); ++c) tc[2 * c] = touching_[c], tc[2 * c + 1] = close_[c];
+    for (std::size_t c = 0; c < touching_.size(); ++c)
+      tc[2 * c] = touching_[c], tc[2 * c + 1] = close_[c];
     comm.max(tc);
-    for (std::size_t c = 0; c < touching_.size(); ++c) touching_[c] = tc[2 * c] > 0, close_[c] = tc[2 * c + 1] > 0;
+    for (std::size_t c = 0; c < touching_.size(); ++c)
+      touching_[c] = tc[2 * c] > 0, close_[c] = tc[2 * c + 1] > 0;
   }
   for (std::size_t c = 0; c < in_contact_.size(); ++c) {
     if (touching_[c] && !in_contact_[c]) ++impacts_, in_contact_[c] = 1;

@@ -223,7 +223,8 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
     auto& cc = c_[c];
     const double* sm = &sums[c * (2 * D + 1)];
     const Vec<D> x0 = Eigen::Map<const Vec<D>>(&ref[c * D]);
-    for (int a = 0; a < D; ++a) cc.centre[a] = sm[a] / sm[2 * D], cc.velocity[a] = sm[D + a] / sm[2 * D];
+    for (int a = 0; a < D; ++a)
+      cc.centre[a] = sm[a] / sm[2 * D], cc.velocity[a] = sm[D + a] / sm[2 * D];
     for (std::size_t k : cc.members) off[k] = x0 + min_image(x[k] - x0) - cc.centre;
   }
   mass_properties(sim);

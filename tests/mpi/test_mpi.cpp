@@ -1,7 +1,6 @@
 // Open MPI runs against the serial run: the same fields (1e-8 of each field's largest value)
 // after 200 steps, the same particles removed, and restarts across rank counts.
 #include <gtest/gtest.h>
-
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
@@ -89,7 +88,8 @@ struct Case {
 };
 
 void serial_vs_ranks(const Case& c, std::vector<int> ranks) {
-  const std::string args = "run " + source(c.scene) + " --quiet --steps 200 --set output.every=1 " + c.set;
+  const std::string args =
+      "run " + source(c.scene) + " --quiet --steps 200 --set output.every=1 " + c.set;
   const std::string serial = out_dir("mpi_" + c.name + "_serial");
   auto r = run_monosph(args + " --out " + serial);
   ASSERT_EQ(r.code, 0) << r.output;
@@ -150,7 +150,8 @@ TEST(Mpi, CuttingWithErosionMatchesSerialAndRemovesTheSameParticles) {
   // A fast tool and a low failure strain: particles fail and are removed within 200 steps.
   const std::string set =
       "dp=4e-5 surfaces.0.velocity=[-300,0] materials.al.damage.D1=0.01 "
-      "materials.al.damage.D2=0 materials.al.damage.D3=0 materials.al.damage.min_failure_strain=0.01";
+      "materials.al.damage.D2=0 materials.al.damage.D3=0 "
+      "materials.al.damage.min_failure_strain=0.01";
   serial_vs_ranks({"cutting", "cases/metal_cutting/scene.yaml", set}, {2, 3});
   auto t = read_csv(MONOSPH_TEST_OUT "/mpi_cutting_np3/probes.csv");
   EXPECT_GT(t["removed_mass"].back(), 0) << "no particle was removed: the test proves nothing";
@@ -177,6 +178,26 @@ TEST(Mpi, PeriodicAcousticWave3dMatchesSerial) {
 
 TEST(Mpi, GrainSettlingMatchesSerial) {
   serial_vs_ranks({"settle", "tests/scenes/grain_in_tank.yaml", ""}, {2});
+}
+
+TEST(Mpi, DamBreakRebalancesAsTheWaterMovesAndStaysOnTheSerialRun) {
+  // 3263 steps to t sqrt(g/H) = 1.5: the column spreads over the tank, the ranks' regions are
+  // recomputed when one holds more than 1.05 x the mean work; the surge stays the serial one.
+  const std::string args =
+      "run " + source("cases/dam_break/scene.yaml") + " --quiet --set output.every=1 end_time=0.15";
+  const std::string serial = out_dir("mpi_rebalance_serial"), par = out_dir("mpi_rebalance_np2");
+  auto a = run_monosph(args + " --out " + serial);
+  ASSERT_EQ(a.code, 0) << a.output;
+  auto b = mpirun(2, args + " --out " + par);
+  ASSERT_EQ(b.code, 0) << b.output;
+  EXPECT_GE(summary(par)["mpi"]["rebalances"].get<long>(), 3);
+  auto ts = read_csv(serial + "/probes.csv"), tm = read_csv(par + "/probes.csv");
+  ASSERT_EQ(ts["front"].size(), tm["front"].size());
+  for (std::size_t q = 0; q < ts["front"].size(); ++q) {
+    EXPECT_NEAR(tm["front"][q], ts["front"][q], 1e-6 * 0.6);
+    EXPECT_NEAR(tm["kinetic_energy"][q], ts["kinetic_energy"][q],
+                1e-6 * max_of(ts["kinetic_energy"]));
+  }
 }
 
 TEST(Mpi, RestartOfTwoRanksOnOneAndThreeRanks) {
