@@ -19,18 +19,10 @@ namespace {
 
 Result mpirun(int ranks, const std::string& args) {
   // --oversubscribe: 3 ranks on this 2-core machine; --bind-to none: no core pinning.
-  const std::string cmd = "timeout 300 " MONOSPH_MPIEXEC
-                          " --allow-run-as-root --oversubscribe --bind-to none -x OMP_NUM_THREADS=1"
-                          " -np " +
-                          std::to_string(ranks) + " " + MONOSPH_BIN + " " + args + " 2>&1";
-  Result r;
-  FILE* f = popen(cmd.c_str(), "r");
-  if (!f) return r;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, f)) r.output.append(buf, n);
-  int st = pclose(f);
-  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
+  return run_command("timeout 300 " MONOSPH_MPIEXEC
+                     " --allow-run-as-root --oversubscribe --bind-to none -x OMP_NUM_THREADS=1"
+                     " -np " +
+                     std::to_string(ranks) + " " + MONOSPH_BIN + " " + args + " 2>&1");
 }
 
 // Every field of every particle (matched by id) within tol x the field's largest |value| (over

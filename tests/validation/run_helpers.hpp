@@ -21,9 +21,9 @@ struct Result {
   std::string output;  // stdout + stderr
 };
 
-inline Result run_monosph(const std::string& args) {
+// Runs a shell command; its output and exit code.
+inline Result run_command(const std::string& cmd) {
   Result r;
-  std::string cmd = std::string(MONOSPH_BIN) + " " + args + " 2>&1";
   FILE* f = popen(cmd.c_str(), "r");
   if (!f) return r;
   char buf[4096];
@@ -31,6 +31,10 @@ inline Result run_monosph(const std::string& args) {
   int st = pclose(f);
   r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
+}
+
+inline Result run_monosph(const std::string& args) {
+  return run_command(std::string(MONOSPH_BIN) + " " + args + " 2>&1");
 }
 
 inline std::string source(const std::string& rel) {
