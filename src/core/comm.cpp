@@ -80,6 +80,11 @@ void Comm::min(std::span<double> x) const {
   reduce(*this, x, MPI_MIN);
 }
 
+void Comm::sum_same(std::span<double> x) const {
+  reduce(*this, x, MPI_SUM);
+  bcast(x, 0);
+}
+
 void Comm::barrier() const {
   if (parallel()) MPI_Barrier(comm_);
 }

@@ -36,6 +36,9 @@ class Comm {
   long max(long x) const;
   long min(long x) const;
   void sum(std::span<double> x) const;  // in place, element-wise
+  // As sum, then rank 0's result on every rank: the same bits everywhere, whatever the
+  // reduction algorithm (state that every rank integrates alike, e.g. rigid clusters).
+  void sum_same(std::span<double> x) const;
   void max(std::span<double> x) const;
   void min(std::span<double> x) const;
   void barrier() const;

@@ -98,7 +98,7 @@ void ClusterModule<D>::mass_properties(Simulation<D>& sim) {
     s[11 * c] = mass, s[11 * c + 1] = inertia;
     for (int q = 0; q < 9; ++q) s[11 * c + 2 + q] = ib(q);
   }
-  sim.comm().sum(s);
+  sim.comm().sum_same(s);
   for (std::size_t c = 0; c < c_.size(); ++c) {
     auto& cc = c_[c];
     cc.mass = s[11 * c], cc.inertia = s[11 * c + 1];
@@ -208,7 +208,7 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
     for (std::size_t k : c_[c].members)
       if (double(ids[k]) == first_id[c])
         for (int a = 0; a < D; ++a) ref[c * D + a] = x[k][a];
-  comm.sum(ref);  // one rank holds that member
+  comm.sum_same(ref);  // one rank holds that member
   for (std::size_t c = 0; c < nc; ++c) {
     const Vec<D> x0 = Eigen::Map<const Vec<D>>(&ref[c * D]);
     double* sm = &sums[c * (2 * D + 1)];
@@ -218,7 +218,7 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
       sm[2 * D] += m[k];
     }
   }
-  comm.sum(sums);
+  comm.sum_same(sums);
   for (std::size_t c = 0; c < nc; ++c) {
     auto& cc = c_[c];
     const double* sm = &sums[c * (2 * D + 1)];
@@ -238,7 +238,7 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
       l += pad3<D>(off[k]).cross(pad3<D>(Vec<D>(m[k] * (v[k] - c_[c].velocity))));
     for (int a = 0; a < 3; ++a) ls[3 * c + a] = l[a];
   }
-  comm.sum(ls);
+  comm.sum_same(ls);
   for (std::size_t c = 0; c < nc; ++c) {
     auto& cc = c_[c];
     const Vec3 l(ls[3 * c], ls[3 * c + 1], ls[3 * c + 2]);
@@ -278,12 +278,13 @@ void ClusterModule<D>::forces(Simulation<D>& sim) {
     }
   }
   if (sim.comm().parallel()) {  // one reduction for all clusters; every rank integrates alike
+    // (from the same bits: rank 0's sums are broadcast)
     std::vector<double> ft;
     for (const auto& c : c_) {
       for (int a = 0; a < D; ++a) ft.push_back(c.force[a]);
       for (int a = 0; a < 3; ++a) ft.push_back(c.torque[a]);
     }
-    sim.comm().sum(ft);
+    sim.comm().sum_same(ft);
     std::size_t q = 0;
     for (auto& c : c_) {
       for (int a = 0; a < D; ++a) c.force[a] = ft[q++];

@@ -7,6 +7,7 @@
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -45,6 +46,7 @@ void expect_same_state(const std::string& a, const std::string& b, double tol = 
     ASSERT_NE(it, where.end()) << "particle id " << ida[i] << " only in " << a;
     map[i] = it->second;
   }
+  double worst_rel = 0;  // largest difference / field scale, fields not zero by symmetry
   for (const auto& f : pa.fields()) {
     const auto& g = pb.field(f.name);
     const int nc = f.ncomp;
@@ -62,10 +64,13 @@ void expect_same_state(const std::string& a, const std::string& b, double tol = 
         scale = std::max(scale, std::abs(x));
         if (!(std::abs(x - y) <= diff)) diff = std::abs(x - y), worst = ida[i];
       }
+    if (scale > 1e-10) worst_rel = std::max(worst_rel, diff / scale);
     EXPECT_LE(diff, tol * scale + 1e-13)
         << f.name << ": largest difference " << diff << " (field scale " << scale
         << ") at particle id " << worst;
   }
+  std::printf("  %zu particles, largest field difference %.2e of the field's scale\n", pa.size(),
+              worst_rel);
   EXPECT_EQ(ma.scalars.size(), mb.scalars.size());
   for (const auto& [k, v] : ma.scalars) {
     auto it = mb.scalars.find(k);
