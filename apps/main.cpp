@@ -76,13 +76,16 @@ int run_main(int argc, char** argv) {
     if (*cmd_info) return print_info(info_scene, info_set);
     if (*cmd_bench) return run_bench(bench);
   } catch (const InputError& e) {
-    fmt::print(stderr, "monosph: error: {}\n", e.what());
+    // Under MPI every rank stops with the same message: rank 0 prints it.
+    if (Comm::world().root()) fmt::print(stderr, "monosph: error: {}\n", e.what());
     return 2;
   } catch (const RunAborted& e) {
-    fmt::print(stderr, "monosph: run stopped: {}\n", e.what());
+    if (Comm::world().root()) fmt::print(stderr, "monosph: run stopped: {}\n", e.what());
     return 3;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "monosph: internal error: {}\n", e.what());
+    const Comm& c = Comm::world();
+    fmt::print(stderr, "monosph: internal error{}: {}\n",
+               c.parallel() ? fmt::format(" on rank {}", c.rank()) : "", e.what());
     return 4;
   }
   return 0;

@@ -197,6 +197,32 @@ TEST(Mpi, DamBreakRebalancesAsTheWaterMovesAndStaysOnTheSerialRun) {
   }
 }
 
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(Mpi, DivergingRunAndBadKeyStopEveryRankWithOneMessage) {
+  // A sound speed of 1 m/s: the surge passes half of it and the Mach guard trips on one rank.
+  const std::string dir = out_dir("mpi_diverging");
+  auto r = mpirun(3, "run " + source("cases/dam_break/scene.yaml") + " --out " + dir +
+                         " --quiet --set materials.water.sound_speed=1 end_time=0.1");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_EQ(count(r.output, "monosph: run stopped: particle id"), 1u) << r.output;
+  EXPECT_EQ(count(r.output, "last state written to"), 1u) << r.output;
+  auto js = summary(dir);
+  EXPECT_NE(js["status"], "completed");
+  bool piece = false;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    piece = piece || e.path().extension() == ".pvtu";
+  EXPECT_TRUE(piece);
+  auto b = mpirun(2, "run " + source("cases/dam_break/scene.yaml") + " --out " + dir +
+                         " --set bodies.0.shifting.sped=2");
+  EXPECT_EQ(b.code, 2) << b.output;
+  EXPECT_EQ(count(b.output, "monosph: error: bodies[0] (water).shifting.sped"), 1u) << b.output;
+}
+
 TEST(Mpi, RestartOfTwoRanksOnOneAndThreeRanks) {
   const std::string scene = source("cases/dam_break/scene.yaml");
   const std::string opts = " --quiet --set output.every=1 output.checkpoint_every=0.004";
