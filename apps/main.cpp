@@ -9,6 +9,7 @@
 #include "core/types.hpp"
 #include "info.hpp"
 #include "runner.hpp"
+#include "study.hpp"
 
 namespace {
 int run_main(int argc, char** argv);
@@ -61,6 +62,19 @@ int run_main(int argc, char** argv) {
   cmd_bench->add_option("--scene", bench.scene, "bench this scene instead of the acoustic wave");
   cmd_bench->add_option("--refine", bench.refine, "with --scene: run at dp divided by each factor");
 
+  StudyOptions study;
+  auto* cmd_study = app.add_subcommand(
+      "study", "run every combination of --vary values; error against wall time (CSV, MD, PNG)");
+  cmd_study->add_option("scene", study.scene, "scene file (YAML)")->required();
+  cmd_study->add_option("--vary", study.vary, "key=v1,v2,... (scene key or stabilisation)")
+      ->required()
+      ->take_all();
+  cmd_study->add_option("--set", study.overrides, "override a scene key in every run")->take_all();
+  cmd_study->add_option("--out", study.out, "output folder (default out/study_<scene name>)");
+  cmd_study->add_option("--metric", study.metric, "reference metric to plot (default: first)");
+  cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")
+      ->check(CLI::PositiveNumber);
+
   set_default_threads();
   try {
     app.parse(argc, argv);
@@ -75,6 +89,7 @@ int run_main(int argc, char** argv) {
     }
     if (*cmd_info) return print_info(info_scene, info_set);
     if (*cmd_bench) return run_bench(bench);
+    if (*cmd_study) return run_study(study);
   } catch (const InputError& e) {
     // Under MPI every rank stops with the same message: rank 0 prints it.
     if (Comm::world().root()) fmt::print(stderr, "monosph: error: {}\n", e.what());

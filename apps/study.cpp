@@ -1,0 +1,327 @@
+#include "study.hpp"
+
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/scene.hpp"
+#include "core/threads.hpp"
+#include "core/types.hpp"
+
+namespace monosph {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Axis {
+  std::string key;
+  std::vector<std::string> values;
+};
+
+Axis parse_vary(const std::string& s) {
+  const auto eq = s.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
+    throw InputError("--vary " + s + ": expected key=v1,v2,... e.g. --vary dp=0.01,0.005");
+  Axis a{s.substr(0, eq), {}};
+  std::stringstream ss(s.substr(eq + 1));
+  for (std::string v; std::getline(ss, v, ',');) {
+    if (v.empty()) throw InputError("--vary " + s + ": empty value");
+    a.values.push_back(v);
+  }
+  if (a.key == "stabilisation")
+    for (const auto& v : a.values)
+      if (v != "none" && v != "artificial_stress" && v != "hourglass")
+        throw InputError("--vary stabilisation: '" + v +
+                         "' is not one of none, artificial_stress, hourglass");
+  return a;
+}
+
+struct Run {
+  std::vector<std::string> values;  // one per axis
+  std::vector<std::string> sets;    // overrides of this run
+  fs::path dir;
+  int code = -1;
+  std::string output;  // first line of the run's messages when it failed
+  nlohmann::json summary;
+};
+
+// Starts `monosph run` for r in the background; returns the child's pid.
+pid_t start(const std::string& self, const std::string& scene, const Run& r, int threads) {
+  std::vector<std::string> args = {self,           "run",     scene,       "--out",
+                                   r.dir.string(), "--quiet", "--threads", std::to_string(threads)};
+  for (const auto& s : r.sets) args.push_back("--set"), args.push_back(s);
+  const fs::path log = r.dir / "study.log";
+  pid_t pid = fork();
+  if (pid == 0) {
+    FILE* f = std::fopen(log.c_str(), "w");
+    if (f) dup2(fileno(f), 1), dup2(fileno(f), 2);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(self.c_str(), argv.data());
+    _exit(127);
+  }
+  if (pid < 0) throw std::runtime_error("study: cannot start a run (fork failed)");
+  return pid;
+}
+
+std::string first_line(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.rfind("monosph:", 0) == 0) return line;
+  return "";
+}
+
+std::string csv_escape(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string r = "\"";
+  for (char c : s) r += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return r + "\"";
+}
+
+}  // namespace
+
+std::vector<std::string> stabilisation_overrides(const std::string& scene_file,
+                                                 const std::vector<std::string>& base,
+                                                 const std::string& variant) {
+  const Scene s = load_scene_file(scene_file, base);
+  std::vector<std::string> sets;
+  bool any = false;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const BodySpec& b = s.bodies[i];
+    if (b.phase != "solid") continue;
+    any = true;
+    const std::string p = fmt::format("bodies.{}.", i);
+    if (variant == "none") {
+      sets.push_back(p + "hourglass={xi: 0}");
+      sets.push_back(p + "artificial_stress={epsilon: 0}");
+    } else if (variant == "artificial_stress") {
+      // Monaghan's artificial stress (MMB Eq. 19-20) with the usual epsilon = 0.3, n = 4.
+      sets.push_back(p + "hourglass={xi: 0}");
+      sets.push_back(p + "artificial_stress={epsilon: 0.3, n: 4}");
+    } else {
+      // The scene's own hourglass control, or stiffness-based xi = 0.5 (MMB Table 2).
+      if (!(b.hg_xi > 0)) sets.push_back(p + "hourglass={xi: 0.5}");
+      sets.push_back(p + "artificial_stress={epsilon: 0}");
+    }
+  }
+  if (!any) throw InputError("--vary stabilisation: scene " + scene_file + " has no solid body");
+  return sets;
+}
+
+int run_study(const StudyOptions& opt) {
+  if (opt.scene.empty()) throw InputError("study: give a scene file");
+  if (opt.vary.empty()) throw InputError("study: give at least one --vary key=v1,v2,...");
+  if (opt.jobs < 1) throw InputError("study: --jobs must be at least 1");
+  const Scene base = load_scene_file(opt.scene, opt.overrides);  // bad scene: error now
+  std::vector<Axis> axes;
+  for (const auto& v : opt.vary) axes.push_back(parse_vary(v));
+  std::string metric = opt.metric;
+  if (metric.empty() && !base.references.empty()) metric = base.references.front().name;
+  if (!metric.empty()) {
+    bool found = false;
+    for (const auto& r : base.references) found = found || r.name == metric;
+    if (!found)
+      throw InputError("study: --metric '" + metric + "' is not a reference of the scene");
+  }
+  const fs::path out =
+      opt.out.empty() ? fs::path("out") / ("study_" + base.name) : fs::path(opt.out);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw InputError("study: cannot write to " + out.string() + ": " + ec.message());
+
+  // Every combination, checked before anything runs (a typo fails now, not after an hour).
+  std::vector<Run> runs;
+  std::vector<std::size_t> k(axes.size(), 0);
+  while (true) {
+    Run r;
+    r.sets = opt.overrides;
+    std::string tag;
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+      const std::string& v = axes[a].values[k[a]];
+      r.values.push_back(v);
+      tag += (a ? "_" : "") + axes[a].key + "-" + v;
+      if (axes[a].key != "stabilisation") r.sets.push_back(axes[a].key + "=" + v);
+    }
+    for (std::size_t a = 0; a < axes.size(); ++a)
+      if (axes[a].key == "stabilisation")
+        for (auto& s : stabilisation_overrides(opt.scene, r.sets, r.values[a])) r.sets.push_back(s);
+    load_scene_file(opt.scene, r.sets);
+    std::replace_if(
+        tag.begin(), tag.end(),
+        [](char c) { return !std::isalnum(c) && c != '-' && c != '_' && c != '.'; }, '_');
+    r.dir = out / fmt::format("run{:02d}_{}", runs.size(), tag);
+    runs.push_back(std::move(r));
+    std::size_t a = 0;
+    while (a < axes.size() && ++k[a] == axes[a].values.size()) k[a] = 0, ++a;
+    if (a == axes.size()) break;
+  }
+
+  const std::string self = fs::read_symlink("/proc/self/exe").string();
+  const int threads = std::max(1, usable_cpus() / opt.jobs);
+  fmt::print("study: {} runs of {}, {} at a time, {} thread{} each, in {}\n", runs.size(),
+             base.name, opt.jobs, threads, threads > 1 ? "s" : "", out.string());
+  std::map<pid_t, std::size_t> running;
+  std::size_t next = 0, done = 0;
+  while (done < runs.size()) {
+    while (next < runs.size() && static_cast<int>(running.size()) < opt.jobs) {
+      fs::remove_all(runs[next].dir, ec);
+      fs::create_directories(runs[next].dir, ec);
+      running[start(self, opt.scene, runs[next], threads)] = next;
+      ++next;
+    }
+    int st = 0;
+    const pid_t pid = waitpid(-1, &st, 0);
+    if (pid < 0) break;
+    auto it = running.find(pid);
+    if (it == running.end()) continue;
+    Run& r = runs[it->second];
+    running.erase(it);
+    ++done;
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    std::ifstream js(r.dir / "summary.json");
+    if (js) r.summary = nlohmann::json::parse(js, nullptr, false);
+    if (r.code != 0) r.output = first_line(r.dir / "study.log");
+    std::string what;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+      what += (a ? " " : "") + axes[a].key + "=" + r.values[a];
+    std::string err = "";
+    if (!metric.empty() && r.summary.is_object() && r.summary["metrics"].contains(metric) &&
+        !r.summary["metrics"][metric]["relative_error"].is_null())
+      err = fmt::format(", {} error {:.3e}", metric,
+                        r.summary["metrics"][metric]["relative_error"].get<double>());
+    fmt::print("study: [{}/{}] {}: {}{}\n", done, runs.size(), what,
+               r.code == 0 ? fmt::format("{:.1f} s wall", r.summary.value("wall_seconds", 0.0))
+                           : "stopped (" + r.output + ")",
+               err);
+    std::fflush(stdout);
+  }
+
+  // study.csv: one row per run.
+  std::vector<std::string> metrics;
+  for (const auto& ref : base.references) metrics.push_back(ref.name);
+  {
+    std::ofstream csv(out / "study.csv");
+    for (const auto& a : axes) csv << csv_escape(a.key) << ",";
+    csv << "particles,steps,wall_seconds,particle_steps_per_second,status";
+    for (const auto& m : metrics) csv << "," << m << "_value," << m << "_relative_error";
+    csv << "\n";
+    for (const auto& r : runs) {
+      for (const auto& v : r.values) csv << csv_escape(v) << ",";
+      const auto& s = r.summary;
+      const bool ok = s.is_object();
+      csv << (ok ? s.value("particles", 0L) : 0) << "," << (ok ? s.value("steps", 0L) : 0) << ","
+          << fmt::format("{:.6g}", ok ? s.value("wall_seconds", 0.0) : NAN) << ","
+          << fmt::format("{:.6g}", ok ? s.value("particle_steps_per_second", 0.0) : NAN) << ","
+          << csv_escape(ok ? s.value("status", std::string("?")) : r.output);
+      for (const auto& m : metrics) {
+        const bool has = ok && s["metrics"].contains(m);
+        auto num = [&](const char* f) {
+          return has && !s["metrics"][m][f].is_null()
+                     ? fmt::format("{:.9g}", s["metrics"][m][f].get<double>())
+                     : std::string("");
+        };
+        csv << "," << num("value") << "," << num("relative_error");
+      }
+      csv << "\n";
+    }
+    if (!csv) throw InputError("study: cannot write " + (out / "study.csv").string());
+  }
+  // study.md: the same as a table.
+  {
+    std::ofstream md(out / "study.md");
+    md << "# Study of " << base.name << "\n\n|";
+    for (const auto& a : axes) md << " " << a.key << " |";
+    md << " particles | wall [s] | particle-steps/s |";
+    for (const auto& m : metrics) md << " " << m << " | error |";
+    md << " status |\n|";
+    for (std::size_t c = 0; c < axes.size() + 3 + 2 * metrics.size() + 1; ++c) md << "---|";
+    md << "\n";
+    for (const auto& r : runs) {
+      md << "|";
+      for (const auto& v : r.values) md << " " << v << " |";
+      const auto& s = r.summary;
+      const bool ok = s.is_object();
+      md << " " << (ok ? s.value("particles", 0L) : 0) << " | "
+         << fmt::format("{:.2f}", ok ? s.value("wall_seconds", 0.0) : NAN) << " | "
+         << fmt::format("{:.3g}", ok ? s.value("particle_steps_per_second", 0.0) : NAN) << " |";
+      for (const auto& m : metrics) {
+        const bool has = ok && s["metrics"].contains(m) && !s["metrics"][m]["value"].is_null();
+        md << (has ? fmt::format(" {:.6g} | {:.2e} |", s["metrics"][m]["value"].get<double>(),
+                                 s["metrics"][m]["relative_error"].is_null()
+                                     ? NAN
+                                     : s["metrics"][m]["relative_error"].get<double>())
+                   : std::string(" – | – |"));
+      }
+      md << " " << (ok ? s.value("status", std::string("?")) : r.output) << " |\n";
+    }
+  }
+  // study.png: error against wall time, log-log, one curve per variant of the axes after the
+  // first (the first axis, usually dp, runs along each curve).
+  bool all_ok = true;
+  for (const auto& r : runs) all_ok = all_ok && r.code == 0;
+  if (metric.empty()) {
+    fmt::print("study: the scene declares no reference value: no plot (study.csv, study.md)\n");
+    return all_ok ? 0 : 3;
+  }
+  std::map<std::string, std::vector<std::pair<double, double>>> curves;
+  std::map<std::pair<std::string, double>, std::string> point_label;  // first axis at each point
+  for (const auto& r : runs) {
+    const auto& s = r.summary;
+    if (!s.is_object() || !s["metrics"].contains(metric)) continue;
+    const auto& e = s["metrics"][metric]["relative_error"];
+    if (e.is_null() || !(e.get<double>() > 0)) continue;
+    std::string label;
+    for (std::size_t a = 1; a < axes.size(); ++a)
+      label += (a > 1 ? " " : "") + axes[a].key + "=" + r.values[a];
+    if (label.empty()) label = axes[0].key + " varied";
+    curves[label].push_back({s.value("wall_seconds", 0.0), e.get<double>()});
+    point_label[{label, s.value("wall_seconds", 0.0)}] = axes[0].key + "=" + r.values[0];
+  }
+  {
+    std::ofstream dat(out / "study.dat");
+    for (auto& [label, pts] : curves) {
+      std::sort(pts.begin(), pts.end());
+      dat << "\"" << label << "\"\n";
+      for (const auto& [t, e] : pts)
+        dat << t << " " << e << " \"" << point_label[{label, t}] << "\"\n";
+      dat << "\n\n";
+    }
+  }
+  {
+    std::ofstream gp(out / "study.gp");
+    gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
+       << "set logscale xy\n"
+       << "set xlabel 'wall time [s]'\nset ylabel 'relative error of " << metric << "'\n"
+       << "set title '" << base.name << ": error against run time'\nset key outside\n"
+       << "set grid\nplot for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
+       << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1), \\\n"
+       << "     for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
+       << "] 'study.dat' index i using 1:2:3 with labels offset 1,0.7 notitle\n";
+  }
+  if (curves.empty()) {
+    fmt::print("study: no run measured {}: no plot (study.csv, study.md)\n", metric);
+  } else if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+    fmt::print(
+        "study: gnuplot not found (apt-get install gnuplot-nox): no plot; study.csv, study.md "
+        "and study.gp are written\n");
+  } else {
+    const std::string cmd = "cd '" + out.string() + "' && gnuplot study.gp 2>&1";
+    if (std::system(cmd.c_str()) != 0)
+      fmt::print("study: gnuplot failed: no plot; study.csv and study.md are written\n");
+  }
+  fmt::print("study: {} (table {}, plot {})\n", (out / "study.csv").string(),
+             (out / "study.md").string(), (out / "study.png").string());
+  return all_ok ? 0 : 3;
+}
+
+}  // namespace monosph
