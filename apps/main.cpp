@@ -72,6 +72,8 @@ int run_main(int argc, char** argv) {
   cmd_study->add_option("--set", study.overrides, "override a scene key in every run")->take_all();
   cmd_study->add_option("--out", study.out, "output folder (default out/study_<scene name>)");
   cmd_study->add_option("--metric", study.metric, "reference metric to plot (default: first)");
+  cmd_study->add_flag("--plot-value", study.plot_value,
+                      "plot the metric's value instead of its relative error (e.g. a disorder)");
   cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")
       ->check(CLI::PositiveNumber);
 

@@ -277,8 +277,11 @@ int run_study(const StudyOptions& opt) {
   std::map<std::pair<std::string, double>, std::string> point_label;  // first axis at each point
   for (const auto& r : runs) {
     const auto& s = r.summary;
-    if (!s.is_object() || !s["metrics"].contains(metric)) continue;
-    const auto& e = s["metrics"][metric]["relative_error"];
+    // A run that stopped early reports its metrics at the stop: not a point of the curve.
+    if (!s.is_object() || s.value("status", std::string()) != "completed" ||
+        !s["metrics"].contains(metric))
+      continue;
+    const auto& e = s["metrics"][metric][opt.plot_value ? "value" : "relative_error"];
     if (e.is_null() || !(e.get<double>() > 0)) continue;
     std::string label;
     for (std::size_t a = 1; a < axes.size(); ++a)
@@ -301,8 +304,10 @@ int run_study(const StudyOptions& opt) {
     std::ofstream gp(out / "study.gp");
     gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
        << "set logscale xy\n"
-       << "set xlabel 'wall time [s]'\nset ylabel 'relative error of " << metric << "'\n"
-       << "set title '" << base.name << ": error against run time'\nset key outside\n"
+       << "set xlabel 'wall time [s]'\nset ylabel '" << (opt.plot_value ? "" : "relative error of ")
+       << metric << "'\n"
+       << "set title '" << base.name << ": " << (opt.plot_value ? metric : "error")
+       << " against run time'\nset key outside\n"
        << "set grid\nplot for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
        << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1), \\\n"
        << "     for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)

@@ -12,6 +12,7 @@ struct StudyOptions {
   std::string out;                     // default out/study_<scene name>
   std::string metric;                  // reference metric to plot (default: the scene's first)
   int jobs = 1;                        // runs at once (separate processes)
+  bool plot_value = false;             // plot the metric's value, not its relative error
 };
 
 // Returns the exit code: 0 when every run completed, 3 when some stopped, 2 on bad input.
