@@ -301,6 +301,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["kernel"] = kernel_name(scene.kernel);
   js["neighbour_builds"] = res.neighbour_builds;
   js["neighbour_seconds"] = res.neighbour_seconds;
+  js["pass_seconds"] = sim.pass_seconds();  // this rank's (rank 0 under MPI)
   js["last_dt"] = sim.dt();
   js["output"] = (out / (scene.name + ".pvd")).string();
   js["metrics"] = nlohmann::json::object();

@@ -483,9 +483,13 @@ void Simulation<D>::update_pair_cache() {
 
 template <int D>
 void Simulation<D>::compute_forces() {
+  PassClock clock(pass_seconds_);
   update_pair_cache();
+  clock.lap("pair_cache");
   for (auto& m : modules_) m->sums(*this);
+  clock.lap("sums");
   for (auto& m : modules_) m->constitutive(*this);
+  clock.lap("constitutive");
   auto a = p_.a();
   auto bd = p_.body();
   const std::size_t n = p_.size();
@@ -493,6 +497,7 @@ void Simulation<D>::compute_forces() {
   for (std::size_t i = 0; i < n; ++i) a[i] = gb_[bd[i]];
   for (auto& m : modules_) m->forces(*this);
   exchange({p_.find("acceleration")});  // ghosts then kick and drift as their owners do
+  clock.lap("forces");
   if (kbc_ >= 0) {  // reaction of each constrained set: what holds it on its prescribed path
     auto bc = p_.template view<std::int64_t>(kbc_);
     auto mass = p_.m();
@@ -554,19 +559,27 @@ void Simulation<D>::advance(double stop) {
   // Approach `stop` in at most two equal steps so that no sliver of a step is left.
   const double rest = stop - t_;
   const double dt = rest <= dt_ ? rest : rest < 2 * dt_ ? 0.5 * rest : dt_;
+  PassClock clock(pass_seconds_);
   kick(0.5 * dt, t_ + 0.5 * dt);
+  clock.lap("integration");
   for (auto& m : modules_) m->rates(*this);
+  clock.lap("rates");
   drift(dt);
   t_ += dt;
   ++step_;
+  clock.lap("integration");
   update_neighbours();
-  compute_forces();
+  clock.lap("neighbours");
+  compute_forces();  // times its own passes
+  clock.restart();
   if (kaprev_ >= 0)
     newmark_kick(dt);
   else
     kick(0.5 * dt, t_);
+  clock.lap("integration");
   check_guards();
   dt_ = compute_dt();
+  clock.lap("guards_and_dt");
   if (dt_ < scene_.dt_collapse * dt0_) {
     std::ostringstream os;
     os << "time step collapsed to " << dt_ << " s (initial " << dt0_ << " s) at t = " << t_;

@@ -1,5 +1,6 @@
 #pragma once
 // Simulation<D>: the particle container, neighbours, modules and the kick-drift-kick integrator.
+#include <chrono>
 #include <limits>
 #include <map>
 #include <memory>
@@ -79,6 +80,21 @@ struct BodyInfo {
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)
 };
 
+// Wall time of each pass of a step, summed over the run (the slowest pass shows in summary.json).
+struct PassClock {
+  explicit PassClock(std::map<std::string, double>& acc) : acc_(acc) { restart(); }
+  void restart() { t0_ = std::chrono::steady_clock::now(); }
+  void lap(const char* pass) {
+    const auto t = std::chrono::steady_clock::now();
+    acc_[pass] += std::chrono::duration<double>(t - t0_).count();
+    t0_ = t;
+  }
+
+ private:
+  std::map<std::string, double>& acc_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
 template <int D>
 class Simulation {
  public:
@@ -137,6 +153,9 @@ class Simulation {
   void remove_particles(const std::vector<char>& flag);
   const std::vector<double>& removed_mass() const { return removed_mass_; }
   void set_removed_mass(std::vector<double> m) { removed_mass_ = std::move(m); }
+  // Seconds spent in each pass of the steps so far: integration (kicks, drift), rates,
+  // neighbours (rebuilds, MPI migration), pair_cache, sums, constitutive, forces, guards_and_dt.
+  const std::map<std::string, double>& pass_seconds() const { return pass_seconds_; }
   // "particle id 12 (body 'water') at (x, y)".
   std::string describe(std::size_t i);
 
@@ -197,6 +216,7 @@ class Simulation {
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;
   bool rebuild_requested_ = false;
+  std::map<std::string, double> pass_seconds_;
 };
 
 }  // namespace monosph
