@@ -13,7 +13,14 @@ struct BenchOptions {
   std::string cases_dir = MONOSPH_CASES_DIR;
   std::string scene;              // bench this scene instead of the acoustic wave...
   std::vector<double> refine{1};  // ...at dp / each of these
+  bool suite = false;             // the five kinds of scene (run_bench_suite)
+  bool quick = false;             // suite at its smallest size only
+  std::string append;             // markdown file the suite appends its rows to
 };
+
+// `monosph bench --suite`: five kinds of scene at 2-4 sizes, each thread count; the slowest
+// pass of each run; JSON (--json) and a block appended to --append (docs/performance.md).
+int run_bench_suite(const BenchOptions& opt);
 
 // `monosph bench`: particle-steps per second of the acoustic-wave scene (2D sizes, one 3D size),
 // or of any scene at refined spacings, on each thread count, and neighbour-build time per

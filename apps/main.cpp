@@ -61,6 +61,12 @@ int run_main(int argc, char** argv) {
   cmd_bench->add_option("--cases", bench.cases_dir, "folder that holds the cases");
   cmd_bench->add_option("--scene", bench.scene, "bench this scene instead of the acoustic wave");
   cmd_bench->add_option("--refine", bench.refine, "with --scene: run at dp divided by each factor");
+  cmd_bench->add_flag("--suite", bench.suite,
+                      "fluid, solid, plasticity, AFM and 3D scenes at several sizes");
+  cmd_bench->add_flag("--quick", bench.quick, "with --suite: the smallest size of each only");
+  cmd_bench->add_option("--append", bench.append,
+                        "with --suite: append the rows to this markdown file "
+                        "(e.g. docs/performance.md)");
 
   StudyOptions study;
   auto* cmd_study = app.add_subcommand(
@@ -90,7 +96,7 @@ int run_main(int argc, char** argv) {
       return run_scene(run).exit_code;
     }
     if (*cmd_info) return print_info(info_scene, info_set);
-    if (*cmd_bench) return run_bench(bench);
+    if (*cmd_bench) return bench.suite ? run_bench_suite(bench) : run_bench(bench);
     if (*cmd_study) return run_study(study);
   } catch (const InputError& e) {
     // Under MPI every rank stops with the same message: rank 0 prints it.

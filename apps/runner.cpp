@@ -257,6 +257,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   res.particle_steps_per_second = wall > 0 ? double(res.particles) * res.steps / wall : 0;
   res.neighbour_builds = sim.neighbours().builds();
   res.neighbour_seconds = sim.neighbours().build_seconds();
+  res.pass_seconds = sim.pass_seconds();
   if (!opt.write_output) return res;
   if (res.exit_code == 0) checkpoint(out / "final.h5");
   csv.close();

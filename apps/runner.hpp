@@ -1,6 +1,7 @@
 #pragma once
 // `monosph run`: a scene from start (or a checkpoint) to its end time, with VTK frames, probes,
 // checkpoints, a progress line and summary.json.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct RunResult {
   long steps = 0;
   double wall_seconds = 0, particle_steps_per_second = 0, neighbour_seconds = 0;
   int neighbour_builds = 0;
+  std::map<std::string, double> pass_seconds;  // wall seconds of each pass (Simulation)
 };
 
 RunResult run_scene(const RunOptions& opt);

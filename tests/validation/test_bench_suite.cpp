@@ -1,0 +1,42 @@
+// `monosph bench --suite`: every kind of scene measured, the slowest pass named, JSON written and
+// a block appended to the markdown file (timings themselves are not asserted).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "run_helpers.hpp"
+
+namespace monosph::test {
+namespace {
+
+TEST(BenchSuite, QuickSuiteMeasuresFiveKindsOfSceneAndAppendsARowBlock) {
+  const std::string dir = out_dir("bench_suite");
+  std::filesystem::create_directories(dir);
+  const std::string md = dir + "/performance.md";
+  std::ofstream(md) << "# Performance\n";
+  auto r = run_monosph("bench --suite --quick --steps 3 --threads 1 --json " + dir +
+                       "/suite.json --append " + md);
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream js(dir + "/suite.json");
+  auto j = nlohmann::json::parse(js);
+  ASSERT_EQ(j["suite"].size(), 5u);
+  for (const auto& row : j["suite"]) {
+    EXPECT_GT(row["particles"].get<long>(), 5000) << row["case"];
+    EXPECT_EQ(row["steps"], 3);
+    EXPECT_GT(row["particle_steps_per_second"].get<double>(), 0);
+    const std::string slow = row["slowest_pass"];
+    EXPECT_TRUE(row["ns_per_particle_step_by_pass"].contains(slow)) << slow;
+    for (const char* pass : {"integration", "neighbours", "pair_cache", "sums", "forces"})
+      EXPECT_TRUE(row["ns_per_particle_step_by_pass"].contains(pass)) << pass;
+  }
+  std::ifstream in(md);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str().rfind("# Performance\n", 0), 0u);  // appended, not overwritten
+  EXPECT_NE(text.str().find("### `monosph bench --suite`"), std::string::npos);
+  EXPECT_NE(text.str().find("| 3D solid (Taylor bar) |"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace monosph::test
