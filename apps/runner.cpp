@@ -310,15 +310,19 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     std::vector<std::string> head;
     std::vector<std::vector<double>> cols;
     read_csv(csv_path, head, cols);
-    for (const auto& ref : scene.references) {
+    // The column of a probe (vector probes: their x component).
+    auto column = [&](const std::string& probe) -> const std::vector<double>* {
       const auto& spec = *std::find_if(scene.probes.begin(), scene.probes.end(),
-                                       [&](const ProbeSpec& s) { return s.name == ref.probe; });
+                                       [&](const ProbeSpec& s) { return s.name == probe; });
       std::string col =
-          spec.type == "momentum" || spec.type == "reaction_force" ? ref.probe + "_x" : ref.probe;
+          spec.type == "momentum" || spec.type == "reaction_force" ? probe + "_x" : probe;
       auto it = std::find(head.begin(), head.end(), col);
-      double value = NAN;
-      if (it != head.end() && !cols.empty())
-        value = measure_series(ref.measure, cols[0], cols[it - head.begin()], ref.start);
+      if (it == head.end() || cols.empty()) return nullptr;
+      return &cols[it - head.begin()];
+    };
+    for (const auto& ref : scene.references) {
+      const auto* y = column(ref.probe);
+      const double value = y ? measure_series(ref.measure, cols[0], *y, ref.start) : NAN;
       nlohmann::json m;
       m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
       m["reference"] = ref.value;
@@ -326,6 +330,26 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
                                 ? nlohmann::json(std::abs(value - ref.value) / std::abs(ref.value))
                                 : nlohmann::json(nullptr);
       js["metrics"][ref.name] = m;
+    }
+    // Pass criteria: a run that stopped fails all of them.
+    if (!scene.checks.empty()) {
+      bool all = true;
+      js["checks"] = nlohmann::json::object();
+      for (const auto& c : scene.checks) {
+        const auto* y = column(c.probe);
+        const double value = y ? measure_series(c.measure, cols[0], *y, c.start) : NAN;
+        const bool pass =
+            status == "completed" && std::isfinite(value) && value >= c.min && value <= c.max;
+        all = all && pass;
+        nlohmann::json m;
+        m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+        if (std::isfinite(c.min)) m["min"] = c.min;
+        if (std::isfinite(c.max)) m["max"] = c.max;
+        m["pass"] = pass;
+        js["checks"][c.name] = m;
+      }
+      js["checks_passed"] = all;
+      if (!all && res.exit_code == 0) res.exit_code = 5;
     }
   }
   std::ofstream(out / "summary.json") << js.dump(2) << "\n";
@@ -347,6 +371,16 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       const double v = m["value"], rv = m["reference"];
       fmt::print(stderr, "monosph: {} = {:.6g} (reference {:.6g}, relative error {:.3e})\n",
                  ref.name, v, rv, std::abs(v - rv) / std::abs(rv));
+    }
+    for (const auto& c : scene.checks) {
+      const nlohmann::json& m = js["checks"][c.name];
+      fmt::print(stderr, "monosph: check {} = {} ({}{}{}): {}\n", c.name,
+                 m["value"].is_null() ? std::string("not measured")
+                                      : fmt::format("{:.6g}", m["value"].get<double>()),
+                 std::isfinite(c.min) ? fmt::format(">= {:g}", c.min) : "",
+                 std::isfinite(c.min) && std::isfinite(c.max) ? ", " : "",
+                 std::isfinite(c.max) ? fmt::format("<= {:g}", c.max) : "",
+                 m["pass"].get<bool>() ? "pass" : "FAIL");
     }
     fmt::print(stderr, "monosph: ParaView file {}\nmonosph: summary {}\n",
                (out / (scene.name + ".pvd")).string(), (out / "summary.json").string());

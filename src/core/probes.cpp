@@ -276,6 +276,11 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
   if (measure == "min") return *std::min_element(yy.begin(), yy.end());
   const double mean = std::accumulate(yy.begin(), yy.end(), 0.0) / yy.size();
   if (measure == "mean") return mean;
+  if (measure == "drift") {  // largest relative change from the first sample
+    double d = 0;
+    for (double y : yy) d = std::max(d, std::abs(y - yy[0]));
+    return yy[0] != 0 ? d / std::abs(yy[0]) : d;
+  }
   if (measure == "peak_ratio") {
     // last local maximum of y - y(start) over the first one: amplitude retention
     std::vector<double> peaks;

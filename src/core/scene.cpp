@@ -915,6 +915,30 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   } else {
     r.optional("reference");
   }
+  if (r.has("checks")) {
+    auto list = r.node("checks");
+    if (!list.IsSequence()) scene_error("checks", "expected a list");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      std::string p = "checks[" + std::to_string(i) + "]";
+      MapReader q(list[i], p);
+      CheckSpec c;
+      c.name = q.text("name");
+      c.probe = q.text("probe");
+      c.measure = q.choice("measure", {"final", "max", "min", "mean", "drift", "period",
+                                       "frequency", "angular_frequency", "peak_ratio"});
+      if (q.has("min")) c.min = q.number("min");
+      if (q.has("max")) c.max = q.number("max");
+      if (!q.has("min") && !q.has("max")) scene_error(p, "give min, max or both");
+      c.start = q.non_negative("start", 0.0);
+      bool found = false;
+      for (const auto& ps : s.probes) found = found || ps.name == c.probe;
+      if (!found) scene_error(p + ".probe", "no probe named '" + c.probe + "'");
+      q.finish();
+      s.checks.push_back(std::move(c));
+    }
+  } else {
+    r.optional("checks");
+  }
   r.finish();
   return s;
 }

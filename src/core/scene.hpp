@@ -3,6 +3,7 @@
 // allowed). Dimension-agnostic: vectors are std::vector<double> of length `dimension`.
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -86,13 +87,13 @@ struct BodySpec {
   // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),
   // the anti-clustering term R (W_ij / W(dp))^n.
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
-  bool no_slip = true;     // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
+  bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
   // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular
   // momentum), auto (central when the scene has rigid clusters, else morris)
   std::string viscous_form = "auto";
-  int erosion = 0;         // remove particles with D >= 1: 0 never, 1 all, 2 surface only
-  Point body_force;        // replaces the scene's body_force when given
-  bool fill_rest = false;  // takes only the lattice nodes no other body takes
+  int erosion = 0;                // remove particles with D >= 1: 0 never, 1 all, 2 surface only
+  Point body_force;               // replaces the scene's body_force when given
+  bool fill_rest = false;         // takes only the lattice nodes no other body takes
   bool cluster_per_part = false;  // rigid: one cluster per part of a union shape (else one)
   Point angular_velocity;         // rigid: initial (2D: one value; 3D: a vector)
 };
@@ -147,6 +148,14 @@ struct ReferenceSpec {
   double start = 0;  // ignore probe samples before this time
 };
 
+// A pass criterion the run checks itself (summary.json "checks"; exit code 5 if one fails).
+struct CheckSpec {
+  std::string name, probe, measure;  // measure: as ReferenceSpec, or drift (max |y - y0| / |y0|)
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  double start = 0;
+};
+
 struct Scene {
   std::string name, description, yaml;  // yaml: the (overridden) source text
   int dimension = 2;
@@ -173,6 +182,7 @@ struct Scene {
   std::vector<std::string> output_fields;
   std::vector<ProbeSpec> probes;
   std::vector<ReferenceSpec> references;
+  std::vector<CheckSpec> checks;
   int reorder_every = 1;  // particles re-sorted in cell order every N neighbour builds
 
   double h() const { return h_factor * dp; }
