@@ -277,6 +277,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     mpi["owned_max"] = comm.max(static_cast<long>(dec->owned()));
     mpi["peers_max"] = comm.max(st.peers);
     mpi["rebalances"] = st.rebalances;
+    mpi["imbalance_last"] = st.imbalance;  // largest / mean work at the last rebuild
     mpi["migrated"] = comm.sum(st.migrated);
   }
   if (!root) return res;

@@ -75,7 +75,7 @@ pid_t start(const std::string& self, const std::string& scene, const Run& r, int
 
 std::string first_line(const fs::path& file) {
   std::ifstream in(file);
-  std::string line, last;
+  std::string line;
   while (std::getline(in, line))
     if (line.rfind("monosph:", 0) == 0) return line;
   return "";

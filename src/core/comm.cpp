@@ -137,26 +137,4 @@ std::vector<std::vector<char>> Comm::exchange(const std::vector<std::vector<char
   return recv;
 }
 
-std::vector<std::vector<char>> Comm::gather(const std::vector<char>& mine) const {
-  if (!parallel()) return {mine};
-  long n = static_cast<long>(mine.size());
-  std::vector<long> counts(size_);
-  MPI_Gather(&n, 1, MPI_LONG, counts.data(), 1, MPI_LONG, 0, comm_);
-  std::vector<std::vector<char>> all;
-  constexpr int tag = 18;
-  if (root()) {
-    all.resize(size_);
-    all[0] = mine;
-    for (int r = 1; r < size_; ++r) {
-      all[r].resize(counts[r]);
-      if (counts[r])
-        MPI_Recv(all[r].data(), static_cast<int>(counts[r]), MPI_BYTE, r, tag, comm_,
-                 MPI_STATUS_IGNORE);
-    }
-  } else if (n) {
-    MPI_Send(mine.data(), static_cast<int>(n), MPI_BYTE, 0, tag, comm_);
-  }
-  return all;
-}
-
 }  // namespace monosph

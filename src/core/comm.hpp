@@ -48,8 +48,6 @@ class Comm {
   std::string first_message(const std::string& local) const;
   // send[r] goes to rank r; returns what each rank sent here, in rank order.
   std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& send) const;
-  // All buffers on rank 0 (in rank order); empty elsewhere.
-  std::vector<std::vector<char>> gather(const std::vector<char>& mine) const;
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;

@@ -10,7 +10,8 @@
 
 namespace monosph {
 
-// ---- packing ------------------------------------------------------------------------------
+namespace {
+// ---- packing: all fields of particles idx, field by field --------------------------------------
 template <int D>
 void pack_particles(const Particles<D>& p, std::span<const int> idx, std::vector<char>& buf) {
   const std::int64_t n = static_cast<std::int64_t>(idx.size());
@@ -54,7 +55,6 @@ std::size_t unpack_particles(Particles<D>& p, const std::vector<char>& buf) {
 }
 
 // ---- Zoltan callbacks ------------------------------------------------------------------------
-namespace {
 template <int D>
 struct ZData {
   Particles<D>* p;
@@ -259,7 +259,8 @@ void Decomposition<D>::exchange(Particles<D>& p, std::span<const int> fields) {
   auto t0 = std::chrono::steady_clock::now();
   std::size_t row = 0;  // bytes per particle
   for (int k : fields) row += static_cast<std::size_t>(p.field(k).ncomp) * 8;
-  std::vector<MPI_Request> req(2 * peers_.size());
+  auto& req = req_;  // kept: no allocation per exchange
+  req.resize(2 * peers_.size());
   constexpr int tag = 23;
   for (std::size_t q = 0; q < peers_.size(); ++q) {
     rbuf_[q].resize(recv_count_[q] * row);
@@ -300,10 +301,6 @@ void Decomposition<D>::exchange(Particles<D>& p, std::span<const int> fields) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-template void pack_particles<2>(const Particles<2>&, std::span<const int>, std::vector<char>&);
-template void pack_particles<3>(const Particles<3>&, std::span<const int>, std::vector<char>&);
-template std::size_t unpack_particles<2>(Particles<2>&, const std::vector<char>&);
-template std::size_t unpack_particles<3>(Particles<3>&, const std::vector<char>&);
 template class Decomposition<2>;
 template class Decomposition<3>;
 

@@ -52,7 +52,6 @@ class Decomposition {
   std::size_t owned() const { return owned_; }
   std::size_t ghosts() const { return ghosts_; }
   const DecompositionStats& stats() const { return stats_; }
-  const Comm& comm() const { return comm_; }
 
  private:
   void partition(Particles<D>& p, const std::vector<float>& work);
@@ -66,14 +65,8 @@ class Decomposition {
   std::vector<std::vector<int>> send_;                // per peer: local indices sent
   std::vector<std::size_t> recv_first_, recv_count_;  // per peer: ghost range
   std::vector<std::vector<char>> sbuf_, rbuf_;
+  std::vector<MPI_Request> req_;
   DecompositionStats stats_;
 };
-
-// Appends the fields of particles idx to buf (raw bytes, field by field).
-template <int D>
-void pack_particles(const Particles<D>& p, std::span<const int> idx, std::vector<char>& buf);
-// Appends the particles in buf to p (ids kept); returns how many.
-template <int D>
-std::size_t unpack_particles(Particles<D>& p, const std::vector<char>& buf);
 
 }  // namespace monosph

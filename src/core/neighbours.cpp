@@ -46,6 +46,14 @@ std::array<int, D> Neighbours<D>::cell_of(const Vec<D>& x) const {
 }
 
 template <int D>
+std::uint32_t Neighbours<D>::cell_index(const Vec<D>& x) const {
+  const auto c = cell_of(x);
+  std::size_t k = 0, stride = 1;
+  for (int a = 0; a < D; ++a) k += c[a] * stride, stride *= nc_[a];
+  return static_cast<std::uint32_t>(k);
+}
+
+template <int D>
 long Neighbours<D>::wrap(Particles<D>& p) const {
   auto x = p.x();
   long bad = -1;
@@ -70,13 +78,8 @@ void Neighbours<D>::sort_by_cell(Particles<D>& p) const {
   auto x = p.x();
   std::size_t ncell = 1;
   for (int a = 0; a < D; ++a) ncell *= nc_[a];
-  std::vector<std::size_t> key(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    auto c = cell_of(x[i]);
-    std::size_t k = 0, stride = 1;
-    for (int a = 0; a < D; ++a) k += c[a] * stride, stride *= nc_[a];
-    key[i] = k;
-  }
+  std::vector<std::uint32_t> key(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) key[i] = cell_index(x[i]);
   std::vector<int> order(p.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
@@ -98,12 +101,7 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder, std::size_t rows) {
     ncell *= nc_[a];
   }
   std::vector<std::uint32_t> cell(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    auto c = cell_of(x[i]);
-    std::size_t k = 0;
-    for (int a = 0; a < D; ++a) k += c[a] * stride[a];
-    cell[i] = static_cast<std::uint32_t>(k);
-  }
+  for (std::size_t i = 0; i < n; ++i) cell[i] = cell_index(x[i]);
   // Counting sort by cell.
   std::vector<std::size_t> cstart(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) ++cstart[cell[i] + 1];

@@ -63,6 +63,7 @@ class Neighbours {
 
  private:
   std::array<int, D> cell_of(const Vec<D>& x) const;
+  std::uint32_t cell_index(const Vec<D>& x) const;  // cell_of flattened, x fastest
   Domain<D> dom_;
   double cutoff_ = 0, skin_ = 0, cell_ = 0;
   std::array<int, D> nc_{};

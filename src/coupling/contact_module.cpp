@@ -132,8 +132,9 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
     touching_[cl[i]] |= touch_[i];
     close_[cl[i]] |= near_[i];
   }
-  if (comm.parallel()) {  // a cluster touches if any of its members does, on any rank
-    std::vector<double> tc(2 * touching_.size());
+  if (comm.parallel()) {     // a cluster touches if any of its members does, on any rank
+    auto& tc = reduce_buf_;  // kept between steps: no allocation
+    tc.resize(2 * touching_.size());
     for (std::size_t c = 0; c < touching_.size(); ++c)
       tc[2 * c] = touching_[c], tc[2 * c + 1] = close_[c];
     comm.max(tc);

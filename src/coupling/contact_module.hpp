@@ -53,6 +53,7 @@ class ContactModule : public Module<D> {
   std::vector<char> touch_, near_;  // per particle: touching / within 1.1 d_c of a solid or wall
   std::vector<char> in_contact_;    // per cluster
   std::vector<char> touching_, close_;  // per cluster, this pass
+  std::vector<double> reduce_buf_;      // both, for the MPI reduction
   std::vector<std::size_t> rigid_;      // indices of the rigid particles (since the last rebuild)
   long impacts_ = 0, pairs_ = 0;
   double max_overlap_ = 0, omega2_ = 0;

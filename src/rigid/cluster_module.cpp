@@ -279,7 +279,8 @@ void ClusterModule<D>::forces(Simulation<D>& sim) {
   }
   if (sim.comm().parallel()) {  // one reduction for all clusters; every rank integrates alike
     // (from the same bits: rank 0's sums are broadcast)
-    std::vector<double> ft;
+    auto& ft = reduce_buf_;  // kept between steps: no allocation
+    ft.clear();
     for (const auto& c : c_) {
       for (int a = 0; a < D; ++a) ft.push_back(c.force[a]);
       for (int a = 0; a < 3; ++a) ft.push_back(c.torque[a]);

@@ -55,6 +55,7 @@ class ClusterModule : public Module<D> {
 
   int kcl_, koff_, kG_;
   std::vector<Cluster> c_;
+  std::vector<double> reduce_buf_;  // force and torque of all clusters (MPI sum)
   Vec<D> lo_, len_;
   std::array<bool, D> periodic_{};
 };
