@@ -136,7 +136,29 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       if (it->weight.empty()) return 1.0;
       return it->weight(x[i][0], x[i][1], D == 3 ? x[i][D - 1] : 0.0, sim.time());
     };
-    if (s.type == "kinetic_energy") {
+    if (s.type == "total_energy") {
+      // kinetic + elastic and hourglass-spring energy (solids) + potential of each body's constant
+      // body force, -m g.x
+      auto ph = p.phase();
+      auto mt = p.material();
+      auto pr = p.p();
+      const int ks = p.find("deviatoric_stress"), kh = p.find("hourglass_energy");
+      double e = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i)) continue;
+        e += 0.5 * m[i] * v[i].squaredNorm() - m[i] * sim.body_force(bd[i]).dot(x[i]);
+        if (kh >= 0) e += p.template view<double>(kh)[i];  // hourglass springs (solid module)
+        if (ph[i] != kSolid) continue;
+        const Material& mm = sim.materials()[mt[i]];
+        double ss = 0;
+        if (ks >= 0 && mm.shear_modulus > 0) {
+          const Mat3& S = p.template view<Mat3>(ks)[i];
+          ss = S.cwiseProduct(S).sum() / (4 * mm.shear_modulus);
+        }
+        e += m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
+      }
+      out.push_back(comm.sum(e));
+    } else if (s.type == "kinetic_energy") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
         if (in_body(i)) e += 0.5 * m[i] * v[i].squaredNorm() * weight(i);
@@ -279,6 +301,49 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
   if (measure == "drift") {  // largest relative change from the first sample
     double d = 0;
     for (double y : yy) d = std::max(d, std::abs(y - yy[0]));
+    return yy[0] != 0 ? d / std::abs(yy[0]) : d;
+  }
+  if (measure == "trend") {
+    // Secular drift of an oscillating quantity (e.g. an energy that swaps between parts measured
+    // with different discretisation errors): the change between its means over the first and the
+    // last whole oscillation cycle, relative to the first. Cycles run between upward crossings of
+    // the residual from a least-squares line; without two cycles, the line's change is used.
+    const double n = static_cast<double>(tt.size());
+    if (tt.size() < 2) return nan;
+    const double tm = std::accumulate(tt.begin(), tt.end(), 0.0) / n;
+    double stt = 0, sty = 0;
+    for (std::size_t k = 0; k < tt.size(); ++k)
+      stt += (tt[k] - tm) * (tt[k] - tm), sty += (tt[k] - tm) * (yy[k] - mean);
+    if (!(stt > 0)) return nan;
+    const double b = sty / stt;
+    auto res = [&](std::size_t k) { return yy[k] - mean - b * (tt[k] - tm); };
+    double rms = 0;
+    for (std::size_t k = 0; k < tt.size(); ++k) rms += res(k) * res(k);
+    rms = std::sqrt(rms / n);
+    // First sample after each upward crossing; the residual must have been below -rms/4 since the
+    // last one (round-off or small ripples are no cycles).
+    std::vector<std::size_t> up;
+    bool armed = false;
+    for (std::size_t k = 0; k < tt.size() && rms > 1e-12 * std::abs(mean); ++k) {
+      if (res(k) < -0.25 * rms) armed = true;
+      if (armed && res(k) >= 0) up.push_back(k), armed = false;
+    }
+    auto cycle_mean = [&](std::size_t k0, std::size_t k1) {  // trapezoid mean over [t_k0, t_k1]
+      double sum = 0;
+      for (std::size_t k = k0; k < k1; ++k) sum += 0.5 * (yy[k] + yy[k + 1]) * (tt[k + 1] - tt[k]);
+      return sum / (tt[k1] - tt[k0]);
+    };
+    if (up.size() >= 3) {
+      const double first = cycle_mean(up[0], up[1]);
+      const double last = cycle_mean(up[up.size() - 2], up.back());
+      return first != 0 ? (last - first) / std::abs(first) : last - first;
+    }
+    const double y0 = mean + b * (tt.front() - tm), change = b * (tt.back() - tt.front());
+    return y0 != 0 ? change / std::abs(y0) : change;
+  }
+  if (measure == "growth") {  // largest relative increase over the first sample (0 if none)
+    double d = 0;
+    for (double y : yy) d = std::max(d, y - yy[0]);
     return yy[0] != 0 ? d / std::abs(yy[0]) : d;
   }
   if (measure == "peak_ratio") {

@@ -821,7 +821,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "integral",       "mean",           "value_at",         "tracked",
         "reaction_force", "surface_force",  "surface_contacts", "removed_mass",
         "field_max",      "field_min",      "extent",           "surface_displacement",
-        "fluid_force",    "penetration",    "grain_impacts",    "contact_pairs"};
+        "fluid_force",    "penetration",    "grain_impacts",    "contact_pairs",
+        "total_energy"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -924,7 +925,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       CheckSpec c;
       c.name = q.text("name");
       c.probe = q.text("probe");
-      c.measure = q.choice("measure", {"final", "max", "min", "mean", "drift", "period",
+      c.measure = q.choice("measure", {"final", "max", "min", "mean", "drift", "growth", "trend", "period",
                                        "frequency", "angular_frequency", "peak_ratio"});
       if (q.has("min")) c.min = q.number("min");
       if (q.has("max")) c.max = q.number("max");

@@ -33,6 +33,10 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
     any_ls_ = any_ls_ || (b.phase == kSolid && b.hg_reference == 2);
   }
   if (any_ls_) kFls_ = p.add_field("fitted_deformation", D * D);
+  bool any_springs = false;
+  for (const auto& b : sim.bodies()) any_springs = any_springs || (b.hg_xi > 0 && b.hg_chi < 1);
+  // Energy in the hourglass springs: part of the scheme's stored energy (total_energy probe).
+  if (any_springs) khge_ = p.add_field("hourglass_energy", 1);
   for (const auto& b : sim.bodies()) {
     if (b.phase != kSolid) continue;
     const Material& m = sim.materials()[b.material];
@@ -391,6 +395,8 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   std::span<double> ep, sy;
   if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
   omega2_.assign(n, 0.0);
+  std::span<double> hge;
+  if (khge_ >= 0) hge = p.template view<double>(khge_);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
@@ -415,6 +421,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
     double kappa = 0;  // sum_j V_j W_ij E_ij / X_ij^2: the pair spring stiffnesses / (V_i xi)
+    double stored = 0;  // sum_j V_j W_ij E_ij (eps . x_ij)^2 / (X_ij^2 r_ij^2)
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (bd[j] != bd[i]) continue;
@@ -432,6 +439,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       const double Eij = sw ? 0.5 * (Ei + (ep[j] > 0 ? sy[j] : E)) : E;
       const double kw = vol[j] * w * Eij, inv = 1.0 / (X2 * r2);  // one division per pair
       kappa += kw * r2 * inv;                                     // k_ij = kw / X2
+      stored += kw * ed * ed * inv;
       f += (kstiff * kw * ed * inv) * d;
       // MMB Eq. 33: viscous force, only when the relative motion increases the error (chi: Eq. 34).
       if (kvisc != 0) {
@@ -445,6 +453,9 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
       }
     }
     a[i] += f / m[i];
+    // The force is -dU/dx_i of U = sum over pairs 1/2 k_ij (eps . x_ij / r_ij)^2 with
+    // k_ij = xi V_i V_j W_ij E / X_ij^2; particle i holds half of each of its pairs.
+    if (!hge.empty()) hge[i] = 0.25 * b.hg_xi * (1 - b.hg_chi) * vi * stored;
     // Springs k_ij = xi V_i V_j W_ij E / X_ij^2 on particle i: by Gershgorin the hourglass part of
     // the stiffness matrix has no frequency above omega^2 = 2 sum_j k_ij / m_i.
     omega2_[i] = 2.0 * b.hg_xi * (1 - b.hg_chi) * kappa / rho[i];

@@ -42,7 +42,7 @@ class SolidModule : public Module<D> {
   bool any_plastic_ = false, any_damage_ = false, any_erosion_ = false;
   std::vector<char> erode_flag_;  // particles to erode this step (kept: no allocation per step)
 
-  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1;
+  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1, khge_ = -1;
   bool any_ls_ = false;
   bool any_as_ = false;
   // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
