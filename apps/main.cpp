@@ -1,4 +1,4 @@
-// monosph command line: run, info, bench.
+// monosph command line: run, info, bench, study, stability.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -9,6 +9,7 @@
 #include "core/types.hpp"
 #include "info.hpp"
 #include "runner.hpp"
+#include "stability.hpp"
 #include "study.hpp"
 
 namespace {
@@ -83,6 +84,18 @@ int run_main(int argc, char** argv) {
   cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")
       ->check(CLI::PositiveNumber);
 
+  StabilityOptions stab;
+  auto* cmd_stab = app.add_subcommand(
+      "stability", "run the stability suite (cases/stability) and print its pass/fail table");
+  cmd_stab->add_option("--suite", stab.suite, "suite file (default cases/stability/suite.yaml)");
+  cmd_stab->add_flag("--quick", stab.quick, "the reduced runs (as in CI)");
+  cmd_stab->add_option("--only", stab.only, "run only these scenes (names)")->take_all();
+  cmd_stab->add_option("--out", stab.out, "output folder (default out/stability)");
+  cmd_stab->add_option("--jobs", stab.jobs, "scenes at once (processes)")
+      ->check(CLI::PositiveNumber);
+  cmd_stab->add_option("--threads", stab.threads, "threads per run (default: cores / jobs)")
+      ->check(CLI::PositiveNumber);
+
   set_default_threads();
   try {
     app.parse(argc, argv);
@@ -98,6 +111,7 @@ int run_main(int argc, char** argv) {
     if (*cmd_info) return print_info(info_scene, info_set);
     if (*cmd_bench) return bench.suite ? run_bench_suite(bench) : run_bench(bench);
     if (*cmd_study) return run_study(study);
+    if (*cmd_stab) return run_stability(stab);
   } catch (const InputError& e) {
     // Under MPI every rank stops with the same message: rank 0 prints it.
     if (Comm::world().root()) fmt::print(stderr, "monosph: error: {}\n", e.what());

@@ -1,9 +1,6 @@
 #include "study.hpp"
 
 #include <fmt/format.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +12,7 @@
 #include "core/scene.hpp"
 #include "core/threads.hpp"
 #include "core/types.hpp"
+#include "processes.hpp"
 
 namespace monosph {
 namespace fs = std::filesystem;
@@ -52,34 +50,6 @@ struct Run {
   std::string output;  // first line of the run's messages when it failed
   nlohmann::json summary;
 };
-
-// Starts `monosph run` for r in the background; returns the child's pid.
-pid_t start(const std::string& self, const std::string& scene, const Run& r, int threads) {
-  std::vector<std::string> args = {self,           "run",     scene,       "--out",
-                                   r.dir.string(), "--quiet", "--threads", std::to_string(threads)};
-  for (const auto& s : r.sets) args.push_back("--set"), args.push_back(s);
-  const fs::path log = r.dir / "study.log";
-  pid_t pid = fork();
-  if (pid == 0) {
-    FILE* f = std::fopen(log.c_str(), "w");
-    if (f) dup2(fileno(f), 1), dup2(fileno(f), 2);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(self.c_str(), argv.data());
-    _exit(127);
-  }
-  if (pid < 0) throw std::runtime_error("study: cannot start a run (fork failed)");
-  return pid;
-}
-
-std::string first_line(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("monosph:", 0) == 0) return line;
-  return "";
-}
 
 std::string csv_escape(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -166,31 +136,27 @@ int run_study(const StudyOptions& opt) {
     if (a == axes.size()) break;
   }
 
-  const std::string self = fs::read_symlink("/proc/self/exe").string();
   const int threads = std::max(1, usable_cpus() / opt.jobs);
   fmt::print("study: {} runs of {}, {} at a time, {} thread{} each, in {}\n", runs.size(),
              base.name, opt.jobs, threads, threads > 1 ? "s" : "", out.string());
-  std::map<pid_t, std::size_t> running;
-  std::size_t next = 0, done = 0;
-  while (done < runs.size()) {
-    while (next < runs.size() && static_cast<int>(running.size()) < opt.jobs) {
-      fs::remove_all(runs[next].dir, ec);
-      fs::create_directories(runs[next].dir, ec);
-      running[start(self, opt.scene, runs[next], threads)] = next;
-      ++next;
-    }
-    int st = 0;
-    const pid_t pid = waitpid(-1, &st, 0);
-    if (pid < 0) break;
-    auto it = running.find(pid);
-    if (it == running.end()) continue;
-    Run& r = runs[it->second];
-    running.erase(it);
+  std::vector<ChildRun> jobs;
+  for (auto& r : runs) {
+    fs::remove_all(r.dir, ec);
+    fs::create_directories(r.dir, ec);
+    ChildRun c{{"run", opt.scene, "--out", r.dir.string(), "--quiet", "--threads",
+                std::to_string(threads)},
+               r.dir / "study.log"};
+    for (const auto& s : r.sets) c.args.push_back("--set"), c.args.push_back(s);
+    jobs.push_back(std::move(c));
+  }
+  std::size_t done = 0;
+  run_children(jobs, opt.jobs, [&](std::size_t k) {
+    Run& r = runs[k];
     ++done;
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.code = jobs[k].code;
     std::ifstream js(r.dir / "summary.json");
     if (js) r.summary = nlohmann::json::parse(js, nullptr, false);
-    if (r.code != 0) r.output = first_line(r.dir / "study.log");
+    if (r.code != 0) r.output = first_message(jobs[k].log);
     std::string what;
     for (std::size_t a = 0; a < axes.size(); ++a)
       what += (a ? " " : "") + axes[a].key + "=" + r.values[a];
@@ -204,7 +170,7 @@ int run_study(const StudyOptions& opt) {
                            : "stopped (" + r.output + ")",
                err);
     std::fflush(stdout);
-  }
+  });
 
   // study.csv: one row per run.
   std::vector<std::string> metrics;

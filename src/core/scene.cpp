@@ -637,6 +637,14 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("slip");
       }
+      if (b.has("wall_pressure")) {
+        if (body.phase == "fluid")
+          scene_error(p + ".wall_pressure", "applies to wall-like (non-fluid) bodies");
+        body.non_negative_wall_pressure =
+            b.choice("wall_pressure", {"extrapolated", "non_negative"}) == "non_negative";
+      } else {
+        b.optional("wall_pressure");
+      }
       if (b.has("body_force"))  // replaces the scene's body_force for this body
         body.body_force = b.vector("body_force", dim);
       else

@@ -88,6 +88,7 @@ struct BodySpec {
   // the anti-clustering term R (W_ij / W(dp))^n.
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
   bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
+  bool non_negative_wall_pressure = false;  // Adami p_w clipped at 0 (no suction at free surfaces)
   // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular
   // momentum), auto (central when the scene has rigid clusters, else morris)
   std::string viscous_form = "auto";

@@ -87,6 +87,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   std::span<Vec<D>> aw;
   if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_);
   auto bd = p.body();
+  const auto& bodies = sim.bodies();
   // Velocity gradient of the rigid motion of cluster particles (set by the clusters module).
   const int kgrad_rigid = p.find("rigid_velocity_gradient");
   const bool kG = kgrad_rigid >= 0;
@@ -139,6 +140,9 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
         // The wall's acceleration: prescribed motion (walls) or the last step's (solid, rigid).
         const Vec<D> ai = ph[i] == kWall ? aw[i] : a[i];
         pw[i] = (sp - ai.dot(srw)) / sw;
+        // `wall_pressure: non_negative`: no suction at free surfaces, where a negative p_w holds
+        // fluid particles on the wall (sticking; cases/stability/README.md).
+        if (bodies[bd[i]].non_negative_wall_pressure) pw[i] = std::max(pw[i], 0.0);
         vw[i] = sv / sw;
       } else {
         pw[i] = 0;
