@@ -11,7 +11,9 @@
 namespace monosph {
 namespace fs = std::filesystem;
 
-std::string self_executable() { return fs::read_symlink("/proc/self/exe").string(); }
+std::string self_executable() {
+  return fs::read_symlink("/proc/self/exe").string();
+}
 
 namespace {
 pid_t start(const std::string& self, const ChildRun& r) {

@@ -23,11 +23,11 @@ namespace fs = std::filesystem;
 namespace {
 
 struct SuiteScene {
-  std::string file;                 // scene file (relative to the suite file)
-  std::vector<std::string> quick;   // --set overrides of the reduced run
-  std::string name;                 // the scene's name
+  std::string file;                // scene file (relative to the suite file)
+  std::vector<std::string> quick;  // --set overrides of the reduced run
+  std::string name;                // the scene's name
   int code = -1;
-  std::string message;              // the run's error, if it stopped
+  std::string message;  // the run's error, if it stopped
   nlohmann::json summary;
 };
 
@@ -49,7 +49,10 @@ std::vector<SuiteScene> read_suite(const std::string& file) {
       MapReader q(list[i], "scenes[" + std::to_string(i) + "]");
       SuiteScene s;
       s.file = (fs::path(file).parent_path() / q.text("scene")).string();
-      if (q.has("quick")) s.quick = q.strings("quick");
+      if (q.has("quick"))
+        s.quick = q.strings("quick");
+      else
+        q.optional("quick");  // named among the allowed keys of an error
       q.finish();
       out.push_back(std::move(s));
     }
@@ -62,7 +65,8 @@ std::vector<SuiteScene> read_suite(const std::string& file) {
 
 std::string bound_text(const nlohmann::json& c) {
   const bool lo = c.contains("min"), hi = c.contains("max");
-  if (lo && hi) return fmt::format("[{:.4g}, {:.4g}]", c["min"].get<double>(), c["max"].get<double>());
+  if (lo && hi)
+    return fmt::format("[{:.4g}, {:.4g}]", c["min"].get<double>(), c["max"].get<double>());
   if (lo) return fmt::format(">= {:.4g}", c["min"].get<double>());
   return fmt::format("<= {:.4g}", c["max"].get<double>());
 }
@@ -83,8 +87,7 @@ int run_stability(const StabilityOptions& opt) {
   for (auto& s : scenes) {
     const Scene sc = load_scene_file(s.file, opt.quick ? s.quick : std::vector<std::string>{});
     s.name = sc.name;
-    if (sc.checks.empty())
-      throw InputError("stability: scene " + s.file + " declares no checks");
+    if (sc.checks.empty()) throw InputError("stability: scene " + s.file + " declares no checks");
     if (opt.only.empty() || std::find(opt.only.begin(), opt.only.end(), s.name) != opt.only.end())
       chosen.push_back(s);
   }
@@ -114,9 +117,9 @@ int run_stability(const StabilityOptions& opt) {
     const fs::path dir = out / s.name;
     fs::remove_all(dir, ec);
     fs::create_directories(dir, ec);
-    ChildRun c{{"run", s.file, "--out", dir.string(), "--quiet", "--threads",
-                std::to_string(threads)},
-               dir / "run.log"};
+    ChildRun c{
+        {"run", s.file, "--out", dir.string(), "--quiet", "--threads", std::to_string(threads)},
+        dir / "run.log"};
     if (opt.quick)
       for (const auto& q : s.quick) c.args.push_back("--set"), c.args.push_back(q);
     jobs.push_back(std::move(c));
@@ -130,8 +133,7 @@ int run_stability(const StabilityOptions& opt) {
     if (js) s.summary = nlohmann::json::parse(js, nullptr, false);
     if (s.code != 0 && s.code != 5) s.message = first_message(jobs[k].log);
     const bool ok = s.summary.is_object() && s.summary.value("checks_passed", false);
-    fmt::print("stability: [{}/{}] {}: {}{}\n", ++done, chosen.size(), s.name,
-               ok ? "pass" : "FAIL",
+    fmt::print("stability: [{}/{}] {}: {}{}\n", ++done, chosen.size(), s.name, ok ? "pass" : "FAIL",
                s.summary.is_object()
                    ? fmt::format(" ({} steps, {:.1f} s)", s.summary.value("steps", 0L),
                                  s.summary.value("wall_seconds", 0.0))
@@ -143,8 +145,8 @@ int run_stability(const StabilityOptions& opt) {
 
   // The table: one row per check, a run that stopped first with its message.
   int checks = 0, failed = 0;
-  std::string table = fmt::format("{:<20} {:<20} {:>12}  {:<24} {}\n", "scene", "check",
-                                  "value", "bound", "result");
+  std::string table = fmt::format("{:<20} {:<20} {:>12}  {:<24} {}\n", "scene", "check", "value",
+                                  "bound", "result");
   std::string md = "| scene | check | value | bound | result |\n|---|---|---|---|---|\n";
   nlohmann::json js = nlohmann::json::object();
   for (const auto& s : chosen) {

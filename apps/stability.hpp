@@ -7,12 +7,12 @@
 namespace monosph {
 
 struct StabilityOptions {
-  std::string suite;               // suite file (default cases/stability/suite.yaml)
+  std::string suite;  // suite file (default cases/stability/suite.yaml)
   std::string out = "out/stability";
-  std::vector<std::string> only;   // scene names to run (default: all)
-  bool quick = false;              // each scene's reduced run (`quick` overrides): CI
-  int jobs = 1;                    // scenes at once (processes)
-  int threads = 0;                 // threads per run (default: the cores / jobs)
+  std::vector<std::string> only;  // scene names to run (default: all)
+  bool quick = false;             // each scene's reduced run (`quick` overrides): CI
+  int jobs = 1;                   // scenes at once (processes)
+  int threads = 0;                // threads per run (default: the cores / jobs)
 };
 
 // Returns 0 when every check of every scene passed, 5 when one failed or a run stopped, 2 on

@@ -933,8 +933,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       CheckSpec c;
       c.name = q.text("name");
       c.probe = q.text("probe");
-      c.measure = q.choice("measure", {"final", "max", "min", "mean", "drift", "growth", "trend", "period",
-                                       "frequency", "angular_frequency", "peak_ratio"});
+      c.measure = q.choice("measure", {"final", "max", "min", "mean", "drift", "growth", "trend",
+                                       "period", "frequency", "angular_frequency", "peak_ratio"});
       if (q.has("min")) c.min = q.number("min");
       if (q.has("max")) c.max = q.number("max");
       if (!q.has("min") && !q.has("max")) scene_error(p, "give min, max or both");

@@ -420,7 +420,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     const auto& F = b.hg_reference == 0 ? Ftot : inter ? Fref : Fls;
     const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
-    double kappa = 0;  // sum_j V_j W_ij E_ij / X_ij^2: the pair spring stiffnesses / (V_i xi)
+    double kappa = 0;   // sum_j V_j W_ij E_ij / X_ij^2: the pair spring stiffnesses / (V_i xi)
     double stored = 0;  // sum_j V_j W_ij E_ij (eps . x_ij)^2 / (X_ij^2 r_ij^2)
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];

@@ -180,6 +180,9 @@ TEST(Mpi, GrainSettlingMatchesSerial) {
 TEST(Mpi, DamBreakRebalancesAsTheWaterMovesAndStaysOnTheSerialRun) {
   // 3263 steps to t sqrt(g/H) = 1.5: the column spreads over the tank, the ranks' regions are
   // recomputed when one holds more than 1.05 x the mean work; the surge stays the serial one.
+  // Round-off differences (summation order) stay below 1e-12 for 2200 steps; then a threshold
+  // switch (free-surface detection lambda <= 0.75, the wall-pressure clip) lifts them to 1e-7 and
+  // 2e-6 of the scale by the end. A lost or misplaced particle would show at 1e-3 and above.
   const std::string args =
       "run " + source("cases/dam_break/scene.yaml") + " --quiet --set output.every=1 end_time=0.15";
   const std::string serial = out_dir("mpi_rebalance_serial"), par = out_dir("mpi_rebalance_np2");
@@ -191,9 +194,9 @@ TEST(Mpi, DamBreakRebalancesAsTheWaterMovesAndStaysOnTheSerialRun) {
   auto ts = read_csv(serial + "/probes.csv"), tm = read_csv(par + "/probes.csv");
   ASSERT_EQ(ts["front"].size(), tm["front"].size());
   for (std::size_t q = 0; q < ts["front"].size(); ++q) {
-    EXPECT_NEAR(tm["front"][q], ts["front"][q], 1e-6 * 0.6);
+    EXPECT_NEAR(tm["front"][q], ts["front"][q], 1e-4 * 0.6);
     EXPECT_NEAR(tm["kinetic_energy"][q], ts["kinetic_energy"][q],
-                1e-6 * max_of(ts["kinetic_energy"]));
+                1e-4 * max_of(ts["kinetic_energy"]));
   }
 }
 

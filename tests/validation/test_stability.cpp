@@ -1,6 +1,7 @@
 // `monosph stability`: the reduced suite passes; failures and bad input are reported.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 #include "run_helpers.hpp"
@@ -32,6 +33,7 @@ TEST(Stability, ReducedSuitePasses) {
 TEST(Stability, AFailedCheckFailsTheSuite) {
   const std::string dir = out_dir("stability_fail");
   const std::string suite = dir + "/suite.yaml";
+  std::filesystem::create_directories(dir);
   std::ofstream(suite) << "scenes:\n  - scene: " << source("cases/acoustic_wave/scene.yaml")
                        << "\n    quick: ['checks=[{name: too_quiet, probe: kinetic_energy, "
                           "measure: max, max: 1e-12}]']\n";
@@ -49,6 +51,7 @@ TEST(Stability, BadInputNamesTheProblem) {
   EXPECT_EQ(a.code, 2);
   EXPECT_NE(a.output.find("--only no_such_scene"), std::string::npos) << a.output;
   const std::string suite = dir + "/suite.yaml";
+  std::filesystem::create_directories(dir);
   std::ofstream(suite) << "scenes:\n  - scene: x.yaml\n    quik: [end_time=1]\n";
   auto b = run_monosph("stability --suite " + suite + " --out " + dir);
   EXPECT_EQ(b.code, 2);
