@@ -597,6 +597,25 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("stress_divergence");
       }
+      if (b.has("formulation")) {
+        if (body.phase != "solid") scene_error(p + ".formulation", "applies to solid bodies only");
+        const std::string f = b.choice("formulation", {"eulerian", "non_hourglass"});
+        body.formulation = f == "non_hourglass" ? 2 : 0;
+        if (body.formulation == 2 && s.materials[body.material].plasticity.on)
+          scene_error(p + ".formulation",
+                      "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" +
+                          s.materials[body.material].name + "' has plasticity");
+      } else {
+        b.optional("formulation");
+      }
+      if (b.has("laplacian_zeta")) {
+        if (body.formulation != 2)
+          scene_error(p + ".laplacian_zeta", "applies with formulation: non_hourglass only");
+        body.laplacian_zeta = b.positive("laplacian_zeta");
+      } else {
+        b.optional("laplacian_zeta");
+        body.laplacian_zeta = 0.7 * dim + 2.1;  // Zhang et al. 2024, Sect. 6 (Wendland, h = 1.3 dp)
+      }
       if (b.has("hourglass")) {
         if (body.phase != "solid")
           scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");

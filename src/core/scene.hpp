@@ -82,6 +82,10 @@ struct BodySpec {
   // Stress divergence: false = normalised gradient (MMB Eq. 10-11); true = corrected gradient,
   // the adjoint of the corrected velocity gradient (Bonet & Lok 1999; docs/theory.md).
   bool corrected_divergence = false;
+  // Solid formulation: 0 Eulerian-kernel MMB (stress divergence), 1 reserved, 2 essentially
+  // non-hourglass updated Lagrangian (Zhang et al. 2024: shear force from a Laplacian).
+  int formulation = 0;
+  double laplacian_zeta = 0;       // Zhang et al. 2024 Eq. 19-20 (default 0.7 d + 2.1)
   bool hg_plastic_switch = false;  // Ganzenmueller: E -> yield stress in Eq. 32 when plastic
   double temperature = 0;          // initial temperature, K (0: the material's T_ref)
   // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),

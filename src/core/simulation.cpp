@@ -40,6 +40,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     BodyInfo info{b.name, ph,      b.material, b.av_alpha, b.av_beta, b.as_epsilon,
                   b.as_n, b.delta, b.hg_xi,    b.hg_zeta,  b.hg_chi,  b.hg_reference};
     info.corrected_divergence = b.corrected_divergence;
+    info.formulation = b.formulation;
+    info.laplacian_zeta = b.laplacian_zeta;
     info.hg_plastic_switch = b.hg_plastic_switch;
     info.temperature = b.temperature;
     info.erosion = b.erosion;

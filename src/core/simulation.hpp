@@ -70,6 +70,8 @@ struct BodyInfo {
   double hg_xi, hg_zeta, hg_chi;      // hourglass control (MMB Eq. 32-34)
   int hg_reference;                   // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
   bool corrected_divergence = false;  // stress divergence with L_i (Bonet & Lok) or 1/S_i (MMB)
+  int formulation = 0;                // 0 Eulerian (MMB), 2 non-hourglass (Zhang et al. 2024)
+  double laplacian_zeta = 0;          // Zhang et al. 2024 Eq. 19-20
   bool hg_plastic_switch = false;     // Ganzenmueller 2015: E -> sigma_y in Eq. 32 when plastic
   double temperature = 0;             // initial temperature (K)
   int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles

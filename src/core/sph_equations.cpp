@@ -189,7 +189,9 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     Mat<D> s = -pr[i] * Mat<D>::Identity();
-    if (kstress_ >= 0) s += dev[i].template topLeftCorner<D, D>();  // MMB Eq. 12
+    // MMB Eq. 12; the non-hourglass formulation (Zhang et al. 2024) takes the shear force from
+    // a Laplacian (solid module) and only the pressure from here (its Eq. 9 and 12).
+    if (kstress_ >= 0 && bodies[bd[i]].formulation != 2) s += dev[i].template topLeftCorner<D, D>();
     if (bodies[bd[i]].corrected_divergence) {
       sig_[i] = s * corr[i];
       wpair_[i] = vol[i];

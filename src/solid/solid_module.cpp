@@ -37,6 +37,9 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   for (const auto& b : sim.bodies()) any_springs = any_springs || (b.hg_xi > 0 && b.hg_chi < 1);
   // Energy in the hourglass springs: part of the scheme's stored energy (total_energy probe).
   if (any_springs) khge_ = p.add_field("hourglass_energy", 1);
+  for (const auto& b : sim.bodies())
+    if (b.phase == kSolid && b.formulation == 2 && klap_ < 0)
+      klap_ = p.add_field("shear_laplacian_integral", D);  // Zhang et al. 2024, Eq. 20
   for (const auto& b : sim.bodies()) {
     if (b.phase != kSolid) continue;
     const Material& m = sim.materials()[b.material];
@@ -104,8 +107,38 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   for (std::size_t i = 0; i < n; ++i)
     if (is_solid(ph[i]))
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
+  if (klap_ >= 0) accumulate_laplacian(sim, dt);
   if (any_plastic_) plastic_return(sim, dt);
   if (any_erosion_) erode(sim);
+}
+
+template <int D>
+void SolidModule<D>::accumulate_laplacian(Simulation<D>& sim, double dt) {
+  // Zhang et al. 2024, Eq. 19-20: I_i += dt sum_j (e_ij . v_ij / r_ij) grad_i W_ij V_j with the
+  // half-step velocities and the pairs of the last force pass (the midpoint rule over the step,
+  // as the stress update). The shear acceleration 2 zeta G / rho_i I_i is added in `forces`.
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  const auto& grp = sim.group();
+  const auto& vol = sim.volumes();
+  auto ph = p.phase();
+  auto bd = p.body();
+  auto v = p.v();
+  auto I = p.template view<Vec<D>>(klap_);
+  const auto& bodies = sim.bodies();
+  const std::size_t n = std::min(p.size(), pl.count.size());
+#pragma omp parallel for schedule(runtime)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_solid(ph[i]) || bodies[bd[i]].formulation != 2) continue;
+    Vec<D> lap = Vec<D>::Zero();
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (grp[j] != grp[i] || !is_solid(ph[j])) continue;
+      const Vec<D>& r = pl.r[k];  // x_i - x_j = r_ij e_ij
+      lap += (vol[j] * pl.f[k] * r.dot(v[i] - v[j]) / r.squaredNorm()) * r;  // f r = grad_i W
+    }
+    I[i] += dt * lap;
+  }
 }
 
 template <int D>
@@ -397,11 +430,15 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   omega2_.assign(n, 0.0);
   std::span<double> hge;
   if (khge_ >= 0) hge = p.template view<double>(khge_);
+  std::span<Vec<D>> lap;
+  if (klap_ >= 0) lap = p.template view<Vec<D>>(klap_);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     const BodyInfo& b = bodies[bd[i]];
     const Material& mat = mats[mt[i]];
+    // Zhang et al. 2024, Eq. 20: shear acceleration 2 zeta G / rho_i I_i (no stress divergence).
+    if (b.formulation == 2) a[i] += (2 * b.laplacian_zeta * mat.shear_modulus / rho[i]) * lap[i];
     const double E =
         9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
     const double cs = mat.sound_speed();

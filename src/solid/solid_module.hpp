@@ -38,11 +38,15 @@ class SolidModule : public Module<D> {
   // Plasticity, heating and damage (MMB Sect. 2.2-2.3), only when a solid material has them.
   void plastic_return(Simulation<D>& sim, double dt);
   void erode(Simulation<D>& sim);
+  // Non-hourglass formulation (Zhang et al. 2024): time integral of the Laplacian of v.
+  void accumulate_laplacian(Simulation<D>& sim, double dt);
+  int klap_ = -1;
   int kep_ = -1, kepr_ = -1, kT_ = -1, kdmg_ = -1, ksy_ = -1;
   bool any_plastic_ = false, any_damage_ = false, any_erosion_ = false;
   std::vector<char> erode_flag_;  // particles to erode this step (kept: no allocation per step)
 
-  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1, khge_ = -1;
+  int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1,
+                                                                     khge_ = -1;
   bool any_ls_ = false;
   bool any_as_ = false;
   // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
