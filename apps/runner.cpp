@@ -256,6 +256,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   res.wall_seconds = wall;
   res.particle_steps_per_second = wall > 0 ? double(res.particles) * res.steps / wall : 0;
   res.neighbour_builds = sim.neighbours().builds();
+  res.configuration_updates = sim.configuration_updates();
   res.neighbour_seconds = sim.neighbours().build_seconds();
   res.pass_seconds = sim.pass_seconds();
   if (!opt.write_output) return res;
@@ -302,6 +303,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["h"] = scene.h();
   js["kernel"] = kernel_name(scene.kernel);
   js["neighbour_builds"] = res.neighbour_builds;
+  js["configuration_updates"] = res.configuration_updates;
   js["neighbour_seconds"] = res.neighbour_seconds;
   js["pass_seconds"] = sim.pass_seconds();  // this rank's (rank 0 under MPI)
   js["last_dt"] = sim.dt();

@@ -808,6 +808,16 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     s.max_dt = t.non_negative("max", 0.0);
     s.dt_collapse = t.positive("collapse_ratio", 1e-4);
     s.newmark_gamma = t.number("newmark_gamma", 0.5);
+    if (t.has("dual_criteria")) {
+      MapReader dc(t.node("dual_criteria"), "time_step.dual_criteria");
+      s.advection_cfl = dc.positive("advection_cfl", 0.2);  // Zhang et al. 2024, Eq. 21
+      s.acoustic_cfl = dc.positive("acoustic_cfl", 0.4);    // Eq. 22
+      if (s.advection_cfl > 1.0) scene_error(dc.at("advection_cfl"), "must not exceed 1");
+      if (s.acoustic_cfl > 1.0) scene_error(dc.at("acoustic_cfl"), "must not exceed 1");
+      dc.finish();
+    } else {
+      t.optional("dual_criteria");
+    }
     if (s.newmark_gamma < 0.5 || s.newmark_gamma > 1.0)
       scene_error("time_step.newmark_gamma", "must lie in [0.5, 1] (0.5: velocity Verlet)");
     t.finish();

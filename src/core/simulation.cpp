@@ -264,10 +264,10 @@ std::string Simulation<D>::describe(std::size_t i) {
 }
 
 template <int D>
-void Simulation<D>::update_neighbours() {
+bool Simulation<D>::update_neighbours() {
   bool need = rebuild_requested_ || nb_.needs_rebuild(p_);
   if (dec_) need = comm_.max(long(need)) > 0;
-  if (!need) return;
+  if (!need) return false;
   rebuild_requested_ = false;
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
   for (auto& m : modules_) m->before_rebuild(*this);
@@ -320,6 +320,7 @@ void Simulation<D>::update_neighbours() {
     throw RunAborted(os.str());
   }
   for (auto& m : modules_) m->on_rebuild(*this);
+  return true;
 }
 
 template <int D>
@@ -485,12 +486,15 @@ void Simulation<D>::update_pair_cache() {
 }
 
 template <int D>
-void Simulation<D>::compute_forces() {
+void Simulation<D>::compute_forces(bool configuration) {
   PassClock clock(pass_seconds_);
-  update_pair_cache();
-  clock.lap("pair_cache");
-  for (auto& m : modules_) m->sums(*this);
-  clock.lap("sums");
+  if (configuration) {  // else: an acoustic step of dual-criteria time stepping
+    update_pair_cache();
+    clock.lap("pair_cache");
+    for (auto& m : modules_) m->sums(*this);
+    clock.lap("sums");
+    ++configuration_updates_;
+  }
   for (auto& m : modules_) m->constitutive(*this);
   clock.lap("constitutive");
   auto a = p_.a();
@@ -514,6 +518,16 @@ void Simulation<D>::compute_forces() {
 }
 
 template <int D>
+double Simulation<D>::max_speed() {
+  auto v = p_.v();
+  const std::size_t n = owned();
+  double vmax = 0;
+#pragma omp parallel for reduction(max : vmax) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) vmax = std::max(vmax, v[i].norm());
+  return comm_.max(vmax);
+}
+
+template <int D>
 double Simulation<D>::compute_dt() {
   auto v = p_.v();
   auto a = p_.a();
@@ -530,7 +544,9 @@ double Simulation<D>::compute_dt() {
     const double an = a[i].norm();
     if (an > 0) dt_f = std::min(dt_f, std::sqrt(h / an));
   }
-  double dt = std::min(scene_.cfl * dt_ac, scene_.force_factor * dt_f);
+  // Zhang et al. 2024, Eq. 22: the acoustic step of dual-criteria time stepping.
+  const double cfl = scene_.advection_cfl > 0 ? scene_.acoustic_cfl : scene_.cfl;
+  double dt = std::min(cfl * dt_ac, scene_.force_factor * dt_f);
   for (auto& m : modules_) dt = std::min(dt, m->max_dt(*this));
   if (scene_.max_dt > 0) dt = std::min(dt, scene_.max_dt);
   return comm_.min(dt);
@@ -571,9 +587,17 @@ void Simulation<D>::advance(double stop) {
   t_ += dt;
   ++step_;
   clock.lap("integration");
-  update_neighbours();
+  const bool rebuilt = update_neighbours();
   clock.lap("neighbours");
-  compute_forces();  // times its own passes
+  // Dual-criteria time stepping (Zhang et al. 2024, Sect. 5): the configuration is updated once
+  // per advection step CFL_ad h / |v|max (and after every neighbour rebuild); the acoustic steps
+  // between keep the pair geometry and kernel sums of the last update.
+  const bool configuration = scene_.advection_cfl <= 0 || rebuilt || t_ >= t_configuration_;
+  compute_forces(configuration);  // times its own passes
+  if (configuration && scene_.advection_cfl > 0) {
+    const double vmax = max_speed();
+    t_configuration_ = vmax > 0 ? t_ + scene_.advection_cfl * kernel_.h() / vmax : t_;
+  }
   clock.restart();
   if (kaprev_ >= 0)
     newmark_kick(dt);

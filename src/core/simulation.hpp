@@ -141,6 +141,8 @@ class Simulation {
 
   // Smallest pair distance seen in the last force pass (set by the pair-force module).
   double min_distance() const { return min_r_; }
+  // Pair-geometry and kernel-sum updates so far (every step unless dual-criteria time stepping).
+  long configuration_updates() const { return configuration_updates_; }
   // Pairs within the support at the current positions (see PairList).
   const PairList<D>& pairs() const { return pairs_; }
   // Particle volumes V = m/rho, computed with the pair list (valid until the next drift).
@@ -188,9 +190,12 @@ class Simulation {
   void keep_acceleration();      // a_n for the first Newmark step
 
   void drift(double dt);
-  void update_neighbours();
-  void compute_forces();
+  bool update_neighbours();  // true when the lists were rebuilt
+  // configuration: recompute the pair geometry and the kernel sums (always, unless dual-criteria
+  // time stepping keeps them for the acoustic steps of an advection step).
+  void compute_forces(bool configuration = true);
   double compute_dt();
+  double max_speed();  // largest |v| over all ranks
   void check_guards();
   void apply_bc_velocity(double t);
 
@@ -211,6 +216,8 @@ class Simulation {
   V g_;
   std::vector<V> gb_;  // per body
   double t_ = 0, dt_ = 0, dt0_ = 0;
+  double t_configuration_ = -1;  // dual-criteria: time of the next configuration update
+  long configuration_updates_ = 0;
   long step_ = 0;
   double min_r_ = 0;
   PairList<D> pairs_;
