@@ -810,8 +810,9 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     s.newmark_gamma = t.number("newmark_gamma", 0.5);
     if (t.has("dual_criteria")) {
       MapReader dc(t.node("dual_criteria"), "time_step.dual_criteria");
-      s.advection_cfl = dc.positive("advection_cfl", 0.2);  // Zhang et al. 2024, Eq. 21
-      s.acoustic_cfl = dc.positive("acoustic_cfl", 0.4);    // Eq. 22
+      // Zhang et al. 2024, Eq. 21; 0 switches dual-criteria stepping off (a study can vary it).
+      s.advection_cfl = dc.non_negative("advection_cfl", 0.2);
+      s.acoustic_cfl = dc.positive("acoustic_cfl", 0.4);  // Eq. 22
       if (s.advection_cfl > 1.0) scene_error(dc.at("advection_cfl"), "must not exceed 1");
       if (s.acoustic_cfl > 1.0) scene_error(dc.at("acoustic_cfl"), "must not exceed 1");
       dc.finish();

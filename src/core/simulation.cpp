@@ -413,6 +413,24 @@ void Simulation<D>::drift(double dt) {
 }
 
 template <int D>
+void Simulation<D>::refresh_pair_vectors() {
+  // Acoustic step of dual-criteria time stepping: the pair vectors r_ij follow the particles (the
+  // forces act along the current directions), the kernel values and factors, the pair set and the
+  // kernel sums stay those of the last configuration update.
+  auto x = p_.x();
+  const std::size_t n = p_.size();
+  const std::array<V, Neighbours<D>::kShifts> shift = nb_.shifts();
+  const int* nbr = nb_.nbr_data();
+  const std::uint8_t* code = nb_.code_data();
+  auto& pl = pairs_;
+  const std::size_t* slot = pair_slot_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t q = pl.first[i]; q < pl.first[i] + pl.count[i]; ++q)
+      pl.r[q] = x[i] - x[nbr[slot[q]]] - shift[code[slot[q]]];
+}
+
+template <int D>
 void Simulation<D>::update_pair_cache() {
   auto x = p_.x();
   auto bd = p_.body();
@@ -445,6 +463,10 @@ void Simulation<D>::update_pair_cache() {
   const int* __restrict nbr = nb.nbr_data();
   const std::uint8_t* __restrict code = nb.code_data();
   const std::array<V, Neighbours<D>::kShifts> shift = nb.shifts();
+  // Dual-criteria time stepping refreshes r_ij from the list entry of each kept pair.
+  const bool track = scene_.advection_cfl > 0;
+  if (track) pair_slot_.resize(nb_.pairs());
+  std::size_t* __restrict slot = pair_slot_.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;
@@ -464,6 +486,7 @@ void Simulation<D>::update_pair_cache() {
       pj[q] = j;
       pr[q] = r;
       pw[q] = r2;
+      if (track) slot[q] = k;
       q += r2 < rs2;
     }
     // Kernel values of the kept pairs in a dense loop (the compiler vectorises the root and
@@ -494,6 +517,9 @@ void Simulation<D>::compute_forces(bool configuration) {
     for (auto& m : modules_) m->sums(*this);
     clock.lap("sums");
     ++configuration_updates_;
+  } else {
+    refresh_pair_vectors();
+    clock.lap("pair_cache");
   }
   for (auto& m : modules_) m->constitutive(*this);
   clock.lap("constitutive");

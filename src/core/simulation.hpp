@@ -195,7 +195,8 @@ class Simulation {
   // time stepping keeps them for the acoustic steps of an advection step).
   void compute_forces(bool configuration = true);
   double compute_dt();
-  double max_speed();  // largest |v| over all ranks
+  double max_speed();           // largest |v| over all ranks
+  void refresh_pair_vectors();  // dual-criteria acoustic step: r_ij only
   void check_guards();
   void apply_bc_velocity(double t);
 
@@ -218,6 +219,7 @@ class Simulation {
   double t_ = 0, dt_ = 0, dt0_ = 0;
   double t_configuration_ = -1;  // dual-criteria: time of the next configuration update
   long configuration_updates_ = 0;
+  std::vector<std::size_t> pair_slot_;  // list entry of each kept pair (dual-criteria only)
   long step_ = 0;
   double min_r_ = 0;
   PairList<D> pairs_;
