@@ -41,6 +41,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
                   b.as_n, b.delta, b.hg_xi,    b.hg_zeta,  b.hg_chi,  b.hg_reference};
     info.corrected_divergence = b.corrected_divergence;
     info.hg_plastic_switch = b.hg_plastic_switch;
+    info.total_lagrangian = b.total_lagrangian;
     info.temperature = b.temperature;
     info.erosion = b.erosion;
     info.group = g;

@@ -71,6 +71,7 @@ struct BodyInfo {
   int hg_reference;                   // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
   bool corrected_divergence = false;  // stress divergence with L_i (Bonet & Lok) or 1/S_i (MMB)
   bool hg_plastic_switch = false;     // Ganzenmueller 2015: E -> sigma_y in Eq. 32 when plastic
+  bool total_lagrangian = false;      // formulation: total_lagrangian (Ganzenmueller 2015)
   double temperature = 0;             // initial temperature (K)
   int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)
