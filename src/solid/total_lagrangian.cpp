@@ -144,7 +144,8 @@ void TotalLagrangian<D>::map_slots(Simulation<D>& sim) {
   std::int64_t maxid = 0;
   for (std::size_t i = 0; i < n; ++i) maxid = std::max(maxid, id[i]);
   for (auto s : sid_) maxid = std::max(maxid, s);
-  std::vector<int> pos(static_cast<std::size_t>(maxid) + 1, -1);
+  auto& pos = pos_;  // id -> index (kept: no allocation per rebuild)
+  pos.assign(static_cast<std::size_t>(maxid) + 1, -1);
   for (std::size_t i = 0; i < n; ++i) pos[id[i]] = static_cast<int>(i);
   idx_.resize(sid_.size());
   slot_of_.assign(n, -1);

@@ -56,6 +56,7 @@ class TotalLagrangian {
   std::vector<Vec<D>> X_, g_;
   std::vector<double> w_;
   std::vector<int> slot_of_;  // per particle index: slot or -1
+  std::vector<int> pos_;      // scratch of map_slots: particle id -> index
   bool built_ = false;
 };
 
