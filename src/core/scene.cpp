@@ -630,12 +630,13 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
           body.hg_xi = hg.non_negative("xi", 0.0);
           hg.optional("alpha");
         }
-        if (body.total_lagrangian)
-          for (const char* k : {"zeta", "chi", "reference"})
-            if (hg.has(k))
-              scene_error(hg.at(k), "not available with formulation: total_lagrangian");
         body.hg_zeta = hg.non_negative("zeta", 0.0);
         body.hg_chi = hg.non_negative("chi", 0.0);
+        // Only the stiffness form (G15 Eq. 32) for total-Lagrangian bodies: zeta, chi must be 0.
+        if (body.total_lagrangian)
+          for (const char* k : {"zeta", "chi"})
+            if (hg.has(k) && hg.number(k) != 0)
+              scene_error(hg.at(k), "must be 0 with formulation: total_lagrangian");
         if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
         const std::string ref =
             hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
