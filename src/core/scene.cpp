@@ -371,6 +371,11 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   m.heat_capacity = r.non_negative("heat_capacity", m.heat_capacity);
   m.taylor_quinney = r.non_negative("taylor_quinney", m.taylor_quinney);
   m.viscosity = r.non_negative("viscosity", m.viscosity);
+  // Stress from F for total-Lagrangian bodies (Ganzenmueller 2015 Eq. 44); default hypoelastic.
+  m.neo_hookean =
+      r.choice("elasticity", {"hypoelastic", "neo_hookean"}, "hypoelastic") == "neo_hookean";
+  if (m.neo_hookean && m.shear_modulus <= 0)
+    scene_error(r.at("elasticity"), "neo_hookean needs a positive shear_modulus");
   if (m.taylor_quinney > 1) scene_error(r.at("taylor_quinney"), "must lie in [0, 1]");
   if (r.has("plasticity")) {
     // MMB Eq. 23 (Johnson & Cook 1983); perfect plasticity is B = 0.
@@ -416,6 +421,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   if (m.damage.on && !m.plasticity.on)
     scene_error(r.at("damage"),
                 "Johnson-Cook damage grows with plastic strain: give `plasticity` too");
+  if (m.plasticity.on && m.neo_hookean)
+    scene_error(r.at("elasticity"), "neo_hookean is elastic: remove `plasticity` or the key");
   if (m.plasticity.on && m.shear_modulus <= 0)
     scene_error(r.at("plasticity"), "needs a positive shear_modulus");
   r.finish();
@@ -526,6 +533,23 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
       body.phase = b.choice("phase", {"fluid", "solid", "wall", "rigid"});
       body.continuum = b.text("continuum", body.name);
+      // MMB Eulerian (default), Ganzenmueller 2015 total-Lagrangian SPH, or Zhang et al. 2024's
+      // essentially non-hourglass updated Lagrangian formulation.
+      if (b.has("formulation")) {
+        if (body.phase != "solid") scene_error(p + ".formulation", "applies to solid bodies only");
+        const std::string f =
+            b.choice("formulation", {"eulerian", "total_lagrangian", "non_hourglass"});
+        body.total_lagrangian = f == "total_lagrangian";
+        body.formulation = f == "total_lagrangian" ? 1 : f == "non_hourglass" ? 2 : 0;
+      } else {
+        b.optional("formulation");
+      }
+      // Keys of the Eulerian scheme that a total-Lagrangian body does not have.
+      if (body.total_lagrangian)
+        for (const char* k : {"artificial_viscosity", "artificial_stress", "density_diffusion",
+                              "stress_divergence", "erosion"})
+          if (b.has(k))
+            scene_error(p + "." + k, "not available with formulation: total_lagrangian");
       std::string mat = b.text("material");
       body.material = s.material_index(mat);
       if (body.material < 0) {
@@ -597,17 +621,10 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("stress_divergence");
       }
-      if (b.has("formulation")) {
-        if (body.phase != "solid") scene_error(p + ".formulation", "applies to solid bodies only");
-        const std::string f = b.choice("formulation", {"eulerian", "non_hourglass"});
-        body.formulation = f == "non_hourglass" ? 2 : 0;
-        if (body.formulation == 2 && s.materials[body.material].plasticity.on)
-          scene_error(p + ".formulation",
-                      "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" +
-                          s.materials[body.material].name + "' has plasticity");
-      } else {
-        b.optional("formulation");
-      }
+      if (body.formulation == 2 && s.materials[body.material].plasticity.on)
+        scene_error(p + ".formulation",
+                    "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" +
+                        s.materials[body.material].name + "' has plasticity");
       if (b.has("laplacian_zeta")) {
         if (body.formulation != 2)
           scene_error(p + ".laplacian_zeta", "applies with formulation: non_hourglass only");
@@ -620,9 +637,22 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         if (body.phase != "solid")
           scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
         MapReader hg(b.node("hourglass"), p + ".hourglass");
-        body.hg_xi = hg.non_negative("xi", 0.0);
+        // Ganzenmueller's alpha (Eq. 31-32) is MMB's xi (Eq. 32): one coefficient, two names.
+        if (hg.has("alpha") && hg.has("xi")) scene_error(hg.path(), "give either xi or alpha");
+        if (hg.has("alpha")) {
+          body.hg_xi = hg.non_negative("alpha", 0.0);
+          hg.optional("xi");
+        } else {
+          body.hg_xi = hg.non_negative("xi", 0.0);
+          hg.optional("alpha");
+        }
         body.hg_zeta = hg.non_negative("zeta", 0.0);
         body.hg_chi = hg.non_negative("chi", 0.0);
+        // Only the stiffness form (G15 Eq. 32) for total-Lagrangian bodies: zeta, chi must be 0.
+        if (body.total_lagrangian)
+          for (const char* k : {"zeta", "chi"})
+            if (hg.has(k) && hg.number(k) != 0)
+              scene_error(hg.at(k), "must be 0 with formulation: total_lagrangian");
         if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
         const std::string ref =
             hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
@@ -707,6 +737,22 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
               "bodies[" + std::to_string(i) + "] (" + s.bodies[i].name + ").stress_divergence",
               "differs from body '" + s.bodies[j].name + "' of the same continuum '" +
                   s.bodies[i].continuum + "'");
+    // Total-Lagrangian bodies: own continuum, no periodic axes; neo-Hookean materials only there.
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+      const auto& bi = s.bodies[i];
+      const std::string pi = "bodies[" + std::to_string(i) + "] (" + bi.name + ")";
+      if (bi.phase == "solid" && !bi.total_lagrangian && s.materials[bi.material].neo_hookean)
+        scene_error(pi + ".material",
+                    "elasticity: neo_hookean needs formulation: total_lagrangian");
+      if (!bi.total_lagrangian) continue;
+      for (std::size_t a = 0; a < s.periodic.size(); ++a)
+        if (s.periodic[a])
+          scene_error(pi + ".formulation", "total_lagrangian does not support periodic axes");
+      for (std::size_t j = 0; j < s.bodies.size(); ++j)
+        if (j != i && s.bodies[j].phase == "solid" && s.bodies[j].continuum == bi.continuum)
+          scene_error(pi + ".continuum", "a total_lagrangian body cannot share its continuum ('" +
+                                             bi.continuum + "')");
+    }
     // A fluid or wall body needs the fluid module.
     for (const auto& body : s.bodies)
       if ((body.phase == "fluid" || body.phase == "wall") &&

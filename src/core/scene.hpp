@@ -52,6 +52,9 @@ struct Material {
   double heat_capacity = 0;     // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
   double taylor_quinney = 0.9;  // eta of MMB Eq. 24
   double viscosity = 0;         // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
+  // `elasticity: neo_hookean`: compressible neo-Hookean PK2 stress from F (Ganzenmueller 2015
+  // Eq. 44), total-Lagrangian bodies only; otherwise hypoelastic (Jaumann S + EOS pressure).
+  bool neo_hookean = false;
   double pressure(double rho) const { return bulk_modulus * (rho / density - 1.0); }  // Eq. 13
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
@@ -82,12 +85,14 @@ struct BodySpec {
   // Stress divergence: false = normalised gradient (MMB Eq. 10-11); true = corrected gradient,
   // the adjoint of the corrected velocity gradient (Bonet & Lok 1999; docs/theory.md).
   bool corrected_divergence = false;
-  // Solid formulation: 0 Eulerian-kernel MMB (stress divergence), 1 reserved, 2 essentially
+  // Solid formulation: 0 Eulerian-kernel MMB (stress divergence), 1 total Lagrangian, 2 essentially
   // non-hourglass updated Lagrangian (Zhang et al. 2024: shear force from a Laplacian).
   int formulation = 0;
   double laplacian_zeta = 0;       // Zhang et al. 2024 Eq. 19-20 (default 0.7 d + 2.1)
   bool hg_plastic_switch = false;  // Ganzenmueller: E -> yield stress in Eq. 32 when plastic
-  double temperature = 0;          // initial temperature, K (0: the material's T_ref)
+  // `formulation: total_lagrangian`: reference-configuration kernels (Ganzenmueller 2015, Sect. 2)
+  bool total_lagrangian = false;
+  double temperature = 0;  // initial temperature, K (0: the material's T_ref)
   // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),
   // the anti-clustering term R (W_ij / W(dp))^n.
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;

@@ -73,6 +73,7 @@ struct BodyInfo {
   int formulation = 0;                // 0 Eulerian (MMB), 2 non-hourglass (Zhang et al. 2024)
   double laplacian_zeta = 0;          // Zhang et al. 2024 Eq. 19-20
   bool hg_plastic_switch = false;     // Ganzenmueller 2015: E -> sigma_y in Eq. 32 when plastic
+  bool total_lagrangian = false;      // formulation: total_lagrangian (Ganzenmueller 2015)
   double temperature = 0;             // initial temperature (K)
   int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)

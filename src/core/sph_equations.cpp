@@ -31,6 +31,7 @@ SphEquations<D>::SphEquations(Simulation<D>& sim, bool store_velocity_gradient) 
   kcorr_ = p.add_field("correction", D * D);
   if (store_velocity_gradient) kgradv_ = p.add_field("velocity_gradient", D * D);
   for (const auto& b : sim.bodies()) {
+    tl_.push_back(b.total_lagrangian ? 1 : 0);
     any_av_ = any_av_ || b.av_alpha > 0 || b.av_beta > 0;
     any_diffusion_ = any_diffusion_ || b.delta > 0;
   }
@@ -48,10 +49,11 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
   auto corr = p.template view<Mat<D>>(kcorr_);
   const double w0 = sim.kernel().w(0.0);
   auto ph = p.phase();
+  auto bd = p.body();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (solids_only_ && ph[i] != kSolid) continue;
+    if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const int gi = grp[i];
     double s = vol[i] * w0;
     Mat<D> b = Mat<D>::Zero();
@@ -97,7 +99,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   }
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (solids_only_ && ph[i] != kSolid) continue;
+    if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const int gi = grp[i];
     Mat<D> g = Mat<D>::Zero();
     double diff = 0;
@@ -133,11 +135,12 @@ void SphEquations<D>::constitutive(Simulation<D>& sim) {
   auto pr = p.p();
   auto mt = p.material();
   auto ph = p.phase();
+  auto bd = p.body();
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (solids_only_ && ph[i] != kSolid) continue;
+    if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const Material& mm = mats[mt[i]];
     pr[i] = mm.pressure(rho[i]);  // MMB Eq. 13
   }
@@ -208,7 +211,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   }
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (solids_only_ && ph[i] != kSolid) continue;
+    if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const int gi = grp[i];
     const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
     Vec<D> acc = Vec<D>::Zero(), accs = Vec<D>::Zero();

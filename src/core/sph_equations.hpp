@@ -24,6 +24,10 @@ class SphEquations : public Module<D> {
 
  private:
   bool solids_only_ = false;
+  // Per body: total-Lagrangian (Ganzenmueller 2015): its particles are skipped by every pass here
+  // (SolidModule computes their F, density, stress and forces from the reference configuration).
+  std::vector<char> tl_;
+  bool skip(std::int64_t body) const { return tl_[body] != 0; }
   int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1, kas_ = -1;
   bool any_av_ = false, any_diffusion_ = false;
   // Per-particle scratch of the pair passes (stress factor, AV and diffusion parameters).

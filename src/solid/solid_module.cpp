@@ -55,6 +55,9 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   }
   if (any_damage_) kdmg_ = p.add_field("damage", 1, FieldType::Real, true);
   if (any_as_) kas_ = p.add_field("artificial_stress", D * D);
+  bool any_tl = false;
+  for (const auto& b : sim.bodies()) any_tl = any_tl || (b.phase == kSolid && b.total_lagrangian);
+  if (any_tl) tl_ = std::make_unique<TotalLagrangian<D>>(sim, kS_, kF_, kgradv_, kX0_, kep_, ksy_);
   const auto& dom = sim.neighbours().domain();
   box_ = dom.length();
   periodic_ = dom.periodic;
@@ -72,6 +75,7 @@ void SolidModule<D>::on_create(Simulation<D>& sim) {
     Fi[i] = Mat<D>::Identity();
     F[i] = Mat<D>::Identity();
   }
+  if (tl_) tl_->on_create(sim);
   if (!any_plastic_) return;
   auto T = p.template view<double>(kT_);
   auto sy = p.template view<double>(ksy_);
@@ -103,9 +107,10 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   auto L = p.template view<Mat<D>>(kgradv_);
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
+  // Hypoelastic stress of both formulations; neo-Hookean S comes from F (constitutive).
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
-    if (is_solid(ph[i]))
+    if (is_solid(ph[i]) && !mats[mt[i]].neo_hookean)
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
   if (klap_ >= 0) accumulate_laplacian(sim, dt);
   if (any_plastic_) plastic_return(sim, dt);
@@ -226,6 +231,7 @@ void SolidModule<D>::constitutive(Simulation<D>& sim) {
   if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
   const auto& bodies = sim.bodies();
   const std::size_t n = p.size();
+  if (tl_) tl_->constitutive(sim);  // pressure and PK1 of the total-Lagrangian particles
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
@@ -255,11 +261,12 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
   auto F = p.template view<Mat<D>>(kF_);
   auto Fi = p.template view<Mat<D>>(kFinit_);
   auto Fr = p.template view<Mat<D>>(kFref_);
+  auto bd = p.body();
   const std::size_t n = p.size();
   if (rstart_.size() != n + 1) return;
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_solid(ph[i])) continue;
+    if (!eulerian(ph[i], bd[i])) continue;
     // F_ref = I + sum_j (u_j - u_i) (x) g_ij = sum_j (x_j - x_i) (x) g_ij, because
     // sum_j (X_j - X_i) (x) g_ij = I by construction of the correction (MMB Eq. 28).
     Mat<D> fr = Mat<D>::Zero();
@@ -271,8 +278,14 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
 }
 
 template <int D>
+void SolidModule<D>::rates(Simulation<D>& sim) {
+  if (tl_) tl_->rates(sim);  // L = Fdot F^-1 (SphEquations::rates skips these particles)
+}
+
+template <int D>
 void SolidModule<D>::sums(Simulation<D>& sim) {
   compute_deformation_gradient(sim);
+  if (tl_) tl_->sums(sim);
   if (any_ls_) fit_deformation(sim, true);
   // The hourglass forces read F_j (and the fit) of neighbours.
   if (any_ls_)
@@ -340,7 +353,10 @@ void SolidModule<D>::before_rebuild(Simulation<D>& sim) {
   auto& p = sim.particles();
   auto F = p.template view<Mat<D>>(kF_);
   auto Fi = p.template view<Mat<D>>(kFinit_);
-  for (std::size_t i = 0; i < p.size(); ++i) Fi[i] = F[i];
+  auto ph = p.phase();
+  auto bd = p.body();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (eulerian(ph[i], bd[i]) || ph[i] != kSolid) Fi[i] = F[i];
 }
 
 template <int D>
@@ -360,7 +376,7 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t c = 0;
-    if (is_solid(ph[i]))
+    if (eulerian(ph[i], bd[i]))
       for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
         const int j = nb.nbr(k);
         if (bd[j] == bd[i] && nb.rij(x[i], x[j], k).norm() < rc) ++c;
@@ -373,7 +389,7 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
   rg_.resize(rstart_[n]);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_solid(ph[i])) continue;
+    if (!eulerian(ph[i], bd[i])) continue;
     std::size_t q = rstart_[i];
     Mat<D> b = Mat<D>::Zero();
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
@@ -396,7 +412,11 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
   auto Fi = p.template view<Mat<D>>(kFinit_);
   auto Fr = p.template view<Mat<D>>(kFref_);
   auto Xr = p.template view<Vec<D>>(kXref_);
-  for (std::size_t i = 0; i < n; ++i) F[i] = Fi[i], Fr[i] = Mat<D>::Identity(), Xr[i] = x[i];
+  for (std::size_t i = 0; i < n; ++i) {
+    Fr[i] = Mat<D>::Identity(), Xr[i] = x[i];
+    if (eulerian(ph[i], bd[i]) || ph[i] != kSolid) F[i] = Fi[i];
+  }
+  if (tl_) tl_->on_rebuild(sim);  // total-Lagrangian reference pairs: built once, then re-mapped
 }
 
 template <int D>
@@ -434,7 +454,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   if (klap_ >= 0) lap = p.template view<Vec<D>>(klap_);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_solid(ph[i])) continue;
+    if (!eulerian(ph[i], bd[i])) continue;
     const BodyInfo& b = bodies[bd[i]];
     const Material& mat = mats[mt[i]];
     // Zhang et al. 2024, Eq. 20: shear acceleration 2 zeta G / rho_i I_i (no stress divergence).
@@ -497,6 +517,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     // the stiffness matrix has no frequency above omega^2 = 2 sum_j k_ij / m_i.
     omega2_[i] = 2.0 * b.hg_xi * (1 - b.hg_chi) * kappa / rho[i];
   }
+  if (tl_) tl_->forces(sim, omega2_, hge);  // G15 Eq. 24 and 32
 }
 
 template <int D>

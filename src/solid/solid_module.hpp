@@ -4,9 +4,11 @@
 // (Eq. 19-20), deformation gradient with an intermediate reference configuration (Eq. 28-30), error
 // vector (Eq. 31) and the stiffness, viscous and combined hourglass forces (Eq. 32-34). The
 // momentum and continuity equations with Sigma = -p I + S are the shared SphEquations (core).
+#include <memory>
 #include <vector>
 
 #include "core/simulation.hpp"
+#include "total_lagrangian.hpp"
 
 namespace monosph {
 
@@ -18,6 +20,7 @@ class SolidModule : public Module<D> {
   void on_create(Simulation<D>& sim) override;
   void drift(Simulation<D>& sim, double dt) override;
   void constitutive(Simulation<D>& sim) override;
+  void rates(Simulation<D>& sim) override;
   void sums(Simulation<D>& sim) override;
   void forces(Simulation<D>& sim) override;
   void before_rebuild(Simulation<D>& sim) override;
@@ -31,8 +34,15 @@ class SolidModule : public Module<D> {
   // Least-squares affine map of the initial onto the current neighbourhood (kernel weights) and
   // the non-affine residual (D^2_min of Falk & Langer 1998) as the disorder measure, in dp.
   void fit_deformation(Simulation<D>& sim, bool store_fit);
+  // The total-Lagrangian bodies (Ganzenmueller 2015), null if the scene has none.
+  TotalLagrangian<D>* total_lagrangian() { return tl_.get(); }
 
  private:
+  // Particle i belongs to a solid body of the Eulerian (MMB) formulation.
+  bool eulerian(std::int64_t ph, std::int64_t body) const {
+    return ph == kSolid && !(tl_ && tl_->is_tl(body));
+  }
+  std::unique_ptr<TotalLagrangian<D>> tl_;
   Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
 
   // Plasticity, heating and damage (MMB Sect. 2.2-2.3), only when a solid material has them.

@@ -226,6 +226,17 @@ TEST(Mpi, DivergingRunAndBadKeyStopEveryRankWithOneMessage) {
   EXPECT_EQ(count(b.output, "monosph: error: bodies[0] (water).shifting.sped"), 1u) << b.output;
 }
 
+TEST(Mpi, TotalLagrangianBodyRunsOnOneRankOnly) {
+  // Not decomposed: a clear one-line error instead of wrong results.
+  auto r = mpirun(2, "run " + source("cases/oscillating_plate/scene.yaml") + " --out " +
+                         out_dir("mpi_tlsph") +
+                         " --quiet --set dp=0.004 end_time=0.001"
+                         " bodies.0.formulation=total_lagrangian");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_EQ(count(r.output, "monosph: error: formulation: total_lagrangian runs on one rank"), 1u)
+      << r.output;
+}
+
 TEST(Mpi, RestartOfTwoRanksOnOneAndThreeRanks) {
   const std::string scene = source("cases/dam_break/scene.yaml");
   const std::string opts = " --quiet --set output.every=1 output.checkpoint_every=0.004";

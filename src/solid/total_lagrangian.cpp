@@ -1,0 +1,319 @@
+#include "total_lagrangian.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+#include "core/sph_equations.hpp"
+
+namespace monosph {
+
+template <int D>
+TotalLagrangian<D>::TotalLagrangian(Simulation<D>& sim, int kS, int kF, int kgradv, int kX0,
+                                    int kep, int ksy)
+    : kS_(kS), kF_(kF), kgradv_(kgradv), kX0_(kX0), kep_(kep), ksy_(ksy) {
+  for (const auto& b : sim.bodies()) tlb_.push_back(b.total_lagrangian ? 1 : 0);
+  // Not decomposed over ranks: the reference pairs would cross rank boundaries.
+  if (sim.comm().size() > 1) throw InputError("formulation: total_lagrangian runs on one rank");
+  // Reference volume V0_j of G15 Eq. 14-24 (checkpointed: restarts rebuild the reference pairs).
+  kV0_ = sim.particles().add_field("reference_volume", 1);
+}
+
+template <int D>
+void TotalLagrangian<D>::on_create(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto v0 = p.template view<double>(kV0_);
+  auto m = p.m();
+  auto rho = p.rho();
+  for (std::size_t i = 0; i < p.size(); ++i) v0[i] = m[i] / rho[i];
+}
+
+template <int D>
+std::size_t TotalLagrangian<D>::reference_neighbours(std::size_t i) const {
+  if (i >= slot_of_.size() || slot_of_[i] < 0) return 0;
+  const int s = slot_of_[i];
+  return start_[s + 1] - start_[s];
+}
+
+template <int D>
+void TotalLagrangian<D>::build(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto bd = p.body();
+  auto id = p.id();
+  auto X0 = p.template view<Vec<D>>(kX0_);
+  auto V0 = p.template view<double>(kV0_);
+  const auto& W = sim.kernel();
+  const double rc = W.radius();
+  const std::size_t n = p.size();
+  // Slots: the total-Lagrangian particles in id order (independent of the particle order).
+  std::vector<std::size_t> ix;
+  for (std::size_t i = 0; i < n; ++i)
+    if (is_tl(bd[i])) ix.push_back(i);
+  std::sort(ix.begin(), ix.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+  const std::size_t ns = ix.size();
+  sid_.resize(ns);
+  v0_.resize(ns);
+  F_.assign(ns, Mat<D>::Identity());
+  P_.assign(ns, Mat<D>::Zero());
+  std::vector<Vec<D>> X(ns);
+  std::vector<std::int64_t> body(ns);
+  for (std::size_t s = 0; s < ns; ++s)
+    sid_[s] = id[ix[s]], v0_[s] = V0[ix[s]], X[s] = X0[ix[s]], body[s] = bd[ix[s]];
+  // Cells of size rc over the reference positions.
+  Vec<D> lo = Vec<D>::Constant(std::numeric_limits<double>::infinity());
+  for (const auto& x : X) lo = lo.cwiseMin(x);
+  std::array<std::int64_t, 3> nc{1, 1, 1};
+  std::vector<std::array<std::int64_t, 3>> cell(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    cell[s] = {0, 0, 0};
+    for (int a = 0; a < D; ++a) {
+      cell[s][a] = static_cast<std::int64_t>(std::floor((X[s][a] - lo[a]) / rc));
+      nc[a] = std::max(nc[a], cell[s][a] + 1);
+    }
+  }
+  auto key = [&](std::int64_t cx, std::int64_t cy, std::int64_t cz) {
+    return (cz * nc[1] + cy) * nc[0] + cx;
+  };
+  std::unordered_map<std::int64_t, std::vector<int>> grid;
+  for (std::size_t s = 0; s < ns; ++s)
+    grid[key(cell[s][0], cell[s][1], cell[s][2])].push_back(static_cast<int>(s));
+  // Reference neighbours: same body, |X_ij| < rc, in slot (= id) order: the sums below run in
+  // the same order whatever the particle order, so a restart reproduces them bit for bit.
+  std::vector<std::vector<int>> nbr(ns);
+  const int dz = D == 3 ? 1 : 0;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t s = 0; s < ns; ++s) {
+    auto& list = nbr[s];
+    for (int cz = -dz; cz <= dz; ++cz)
+      for (int cy = -1; cy <= 1; ++cy)
+        for (int cx = -1; cx <= 1; ++cx) {
+          const std::int64_t x = cell[s][0] + cx, y = cell[s][1] + cy, z = cell[s][2] + cz;
+          if (x < 0 || y < 0 || z < 0 || x >= nc[0] || y >= nc[1] || z >= nc[2]) continue;
+          auto it = grid.find(key(x, y, z));
+          if (it == grid.end()) continue;
+          for (int t : it->second)
+            if (t != static_cast<int>(s) && body[t] == body[s] && (X[t] - X[s]).norm() < rc)
+              list.push_back(t);
+        }
+    std::sort(list.begin(), list.end());
+  }
+  start_.assign(ns + 1, 0);
+  for (std::size_t s = 0; s < ns; ++s) start_[s + 1] = start_[s] + nbr[s].size();
+  const std::size_t np = start_[ns];
+  nj_.resize(np);
+  rev_.resize(np);
+  X_.resize(np);
+  g_.resize(np);
+  w_.resize(np);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < ns; ++s) {
+    Mat<D> b = Mat<D>::Zero();
+    for (std::size_t q = 0; q < nbr[s].size(); ++q) {
+      const std::size_t k = start_[s] + q;
+      const int t = nbr[s][q];
+      const Vec<D> r = X[s] - X[t];  // X_i - X_j: grad_i W(X_ij) = f(|r|) r
+      const double rr = r.norm(), f = W.f(rr);
+      nj_[k] = t;
+      X_[k] = -r;  // X_ij = X_j - X_i (G15 Fig. 1)
+      w_[k] = W.w(rr);
+      g_[k] = v0_[t] * f * r;
+      b.noalias() -= (v0_[t] * f) * (r * r.transpose());
+    }
+    // Reference correction L_i (G15 Eq. 14-16): sum_j (X_j - X_i) (x) g_ij = I.
+    const Mat<D> L = invert_correction<D>(b);
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) g_[k] = L * g_[k];
+  }
+  // Reverse pair (j, i) of every pair (i, j): the reference support is symmetric.
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < ns; ++s)
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
+      const int t = nj_[k];
+      auto b = nj_.begin() + static_cast<std::ptrdiff_t>(start_[t]);
+      auto e = nj_.begin() + static_cast<std::ptrdiff_t>(start_[t + 1]);
+      rev_[k] = static_cast<int>(std::lower_bound(b, e, static_cast<int>(s)) - nj_.begin());
+    }
+  built_ = true;
+}
+
+template <int D>
+void TotalLagrangian<D>::map_slots(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto id = p.id();
+  const std::size_t n = p.size();
+  std::int64_t maxid = 0;
+  for (std::size_t i = 0; i < n; ++i) maxid = std::max(maxid, id[i]);
+  for (auto s : sid_) maxid = std::max(maxid, s);
+  auto& pos = pos_;  // id -> index (kept: no allocation per rebuild)
+  pos.assign(static_cast<std::size_t>(maxid) + 1, -1);
+  for (std::size_t i = 0; i < n; ++i) pos[id[i]] = static_cast<int>(i);
+  idx_.resize(sid_.size());
+  slot_of_.assign(n, -1);
+  for (std::size_t s = 0; s < sid_.size(); ++s) {
+    idx_[s] = pos[sid_[s]];
+    if (idx_[s] < 0)
+      throw RunAborted("total-Lagrangian particle id " + std::to_string(sid_[s]) +
+                       " was removed: its reference neighbours need it");
+    slot_of_[idx_[s]] = static_cast<int>(s);
+  }
+}
+
+template <int D>
+void TotalLagrangian<D>::on_rebuild(Simulation<D>& sim) {
+  if (!built_) build(sim);  // first build, fresh or restarted (from X0 and V0)
+  map_slots(sim);
+}
+
+template <int D>
+void TotalLagrangian<D>::rates(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto v = p.v();
+  auto drho = p.drho();
+  auto L = p.template view<Mat<D>>(kgradv_);
+  const std::size_t ns = sid_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int i = idx_[s];
+    Mat<D> F = Mat<D>::Zero(), Fd = Mat<D>::Zero();
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
+      const int j = idx_[nj_[k]];
+      F.noalias() += (x[j] - x[i]) * g_[k].transpose();   // G15 Eq. 17
+      Fd.noalias() += (v[j] - v[i]) * g_[k].transpose();  // its rate
+    }
+    L[i] = Fd * F.inverse();  // velocity gradient dv/dx = Fdot F^-1
+    drho[i] = 0;              // rho = rho0 / det F: no continuity equation
+  }
+}
+
+template <int D>
+void TotalLagrangian<D>::sums(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto m = p.m();
+  auto rho = p.rho();
+  auto Ff = p.template view<Mat<D>>(kF_);
+  const std::size_t ns = sid_.size();
+  long bad = -1;
+#pragma omp parallel for schedule(static) reduction(max : bad)
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int i = idx_[s];
+    Mat<D> F = Mat<D>::Zero();
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k)
+      F.noalias() += (x[idx_[nj_[k]]] - x[i]) * g_[k].transpose();  // G15 Eq. 17
+    F_[s] = F;
+    Ff[i] = F;
+    const double J = F.determinant();
+    if (!(J > 0)) bad = std::max(bad, long(i));
+    rho[i] = m[i] / (v0_[s] * J);  // rho0 V0 = m = rho V, V = J V0
+  }
+  if (bad >= 0)
+    throw RunAborted("total-Lagrangian " + sim.describe(bad) +
+                     ": det F <= 0 (inverted neighbourhood) at t = " + std::to_string(sim.time()));
+}
+
+template <int D>
+void TotalLagrangian<D>::constitutive(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  auto rho = p.rho();
+  auto pr = p.p();
+  auto mt = p.material();
+  auto S = p.template view<Mat3>(kS_);
+  const int kd = p.find("damage");
+  std::span<double> dmg;
+  if (kd >= 0) dmg = p.template view<double>(kd);
+  const auto& mats = sim.materials();
+  const std::size_t ns = sid_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int i = idx_[s];
+    const Material& mat = mats[mt[i]];
+    const Mat<D>& F = F_[s];
+    const double J = F.determinant();
+    if (mat.neo_hookean) {
+      // G15 Eq. 44: S = mu (I - C^-1) + lambda ln J C^-1, P = F S (G15 Eq. 20). Plane strain in
+      // 2D (F_zz = 1). Cauchy sigma = P F^T / J is kept as pressure and deviator for output.
+      const double mu = mat.shear_modulus, lam = mat.bulk_modulus - 2.0 * mu / 3.0;
+      const Mat<D> Ci = (F.transpose() * F).inverse();
+      const double lnJ = std::log(J);
+      const Mat<D> S2 = mu * (Mat<D>::Identity() - Ci) + lam * lnJ * Ci;
+      P_[s] = F * S2;
+      Mat3 sig = Mat3::Zero();
+      sig.template topLeftCorner<D, D>() = P_[s] * F.transpose() / J;
+      if constexpr (D == 2) sig(2, 2) = lam * lnJ / J;
+      const double pp = -sig.trace() / 3.0;
+      pr[i] = pp;
+      S[i] = sig + pp * Mat3::Identity();
+    } else {
+      // Hypoelastic: Cauchy sigma = -p I + S, p from the linear EOS (MMB Eq. 13) at rho0/det F,
+      // S from the Jaumann update (and return mapping) of SolidModule::drift.
+      double pp = mat.pressure(rho[i]);
+      if (kd >= 0 && dmg[i] >= 1 && pp < 0) pp = 0;  // failed: no tension (as the Eulerian solid)
+      pr[i] = pp;
+      const Mat<D> sig = Mat<D>(S[i].template topLeftCorner<D, D>()) - pp * Mat<D>::Identity();
+      P_[s] = J * sig * F.inverse().transpose();  // PK1 P = J sigma F^-T
+    }
+  }
+}
+
+template <int D>
+void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
+                                std::span<double> hge) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto a = p.a();
+  auto m = p.m();
+  auto bd = p.body();
+  auto mt = p.material();
+  std::span<double> ep, sy;
+  if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
+  const auto& bodies = sim.bodies();
+  const auto& mats = sim.materials();
+  const std::size_t ns = sid_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < ns; ++s) {
+    const int i = idx_[s];
+    const BodyInfo& b = bodies[bd[i]];
+    const double alpha = b.hg_xi;  // G15 alpha = MMB xi (docs/theory.md)
+    const double E = mats[mt[i]].youngs_modulus();
+    // G15 Sect. 4.5: a plastically deformed particle uses its yield stress in Eq. 32.
+    const bool sw = b.hg_plastic_switch && ksy_ >= 0;
+    const double Ei = sw && ep[i] > 0 ? sy[i] : E;
+    const double vi = v0_[s];
+    const Mat<D> Pi = vi * P_[s];
+    Vec<D> f = Vec<D>::Zero();
+    double kappa = 0, stored = 0;
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
+      const int t = nj_[k];
+      // G15 Eq. 24: f_i = sum_j V_i V_j (P_i L_i grad W_i(X_ij) - P_j L_j grad W_j(X_ji));
+      // g_ij holds V_j L_i grad W: anti-symmetric pair terms, linear momentum exact.
+      f.noalias() += Pi * g_[k] - v0_[t] * (P_[t] * g_[rev_[k]]);
+      if (alpha <= 0) continue;
+      // G15 Eq. 25-27: error of the pair against F_i X_ij and F_j X_ij (X_ji = -X_ij).
+      const int j = idx_[t];
+      const Vec<D> xij = x[j] - x[i];
+      const double r = xij.norm();
+      const Vec<D>& X = X_[k];
+      const double X2 = X.squaredNorm();
+      const double di = (F_[s] * X - xij).dot(xij) / r;
+      const double dj = (F_[t] * X - xij).dot(xij) / r;
+      const double Ej = sw && ep[j] > 0 ? sy[j] : E;
+      const double vw = v0_[t] * w_[k] / X2;  // V_j W(X_ij) / X_ij^2, W in the reference frame
+      // G15 Eq. 32: -1/2 alpha V_i V_j W_ij / X_ij^2 [E_i delta_i + E_j delta_j] x_ij / x_ij
+      f += (-0.5 * alpha * vi * vw * (Ei * di + Ej * dj) / r) * xij;
+      const double Eij = 0.5 * (Ei + Ej), dm = 0.5 * (di + dj);
+      kappa += vw * Eij;
+      stored += vw * Eij * dm * dm;
+    }
+    a[i] += f / m[i];
+    // Springs k_ij = alpha V_i V_j W_ij E / X_ij^2: omega^2 <= 2 sum_j k_ij / m_i (Gershgorin),
+    // as the Eulerian hourglass springs (SolidModule::max_dt).
+    omega2[i] = 2.0 * alpha * kappa * vi / m[i];
+    if (!hge.empty()) hge[i] = 0.25 * alpha * vi * stored;
+  }
+}
+
+template class TotalLagrangian<2>;
+template class TotalLagrangian<3>;
+
+}  // namespace monosph

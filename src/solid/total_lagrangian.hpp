@@ -1,0 +1,63 @@
+#pragma once
+// Total-Lagrangian SPH solids (Ganzenmueller 2015, "G15", Sect. 2-3), per body with
+// `formulation: total_lagrangian`. The reference configuration is the initial one: reference
+// neighbours (same body, within the kernel support at the initial positions) and the corrected
+// reference kernel gradients g_ij = V0_j L_i grad W(X_ij) (G15 Eq. 14-16) are found once and never
+// change. Deformation gradient F (G15 Eq. 17), density rho0/det F, velocity gradient Fdot F^-1,
+// PK1 stress from the hypoelastic (Jaumann S + EOS pressure, J2/Johnson-Cook) or neo-Hookean
+// (G15 Eq. 44) model, the momentum-conserving corrected force (G15 Eq. 24) and the hourglass
+// force (G15 Eq. 25-32). SolidModule owns it and calls it from its passes.
+//
+// Storage is in "slots": the total-Lagrangian particles in the order of their ids. Reference
+// data is per slot and survives the cell-order re-sorting of particles; only the slot -> index
+// map is renewed at every neighbour rebuild. Restarts rebuild the reference data from the
+// checkpointed fields initial_position and reference_volume (deterministic: bit-identical).
+#include <vector>
+
+#include "core/simulation.hpp"
+
+namespace monosph {
+
+template <int D>
+class TotalLagrangian {
+ public:
+  // Field indices of SolidModule: deviatoric stress, deformation gradient, velocity gradient,
+  // initial position (= reference position), plastic strain and yield stress (-1 if none).
+  TotalLagrangian(Simulation<D>& sim, int kS, int kF, int kgradv, int kX0, int kep, int ksy);
+
+  bool is_tl(std::int64_t body) const { return tlb_[body] != 0; }
+  void on_create(Simulation<D>& sim);  // reference volumes V0 = m / rho
+  void on_rebuild(Simulation<D>& sim);
+  void rates(Simulation<D>& sim);         // F, L = Fdot F^-1 at the half-step velocities
+  void sums(Simulation<D>& sim);          // F (G15 Eq. 17) and rho = rho0 / det F
+  void constitutive(Simulation<D>& sim);  // pressure, S (neo-Hookean) and PK1 P
+  // Internal and hourglass forces; omega2 (per particle) the hourglass spring frequency bound,
+  // hge (may be empty) the energy in the hourglass springs.
+  void forces(Simulation<D>& sim, std::vector<double>& omega2, std::span<double> hge);
+
+  // Reference pair data of a particle (tests): number of reference neighbours.
+  std::size_t reference_neighbours(std::size_t i) const;
+
+ private:
+  void build(Simulation<D>& sim);  // the reference pairs, once
+  void map_slots(Simulation<D>& sim);
+
+  std::vector<char> tlb_;  // per body
+  int kS_, kF_, kgradv_, kX0_, kV0_, kep_, ksy_;
+  // Per slot: particle id, current index, V0, F, PK1 P.
+  std::vector<std::int64_t> sid_;
+  std::vector<int> idx_;
+  std::vector<double> v0_;
+  std::vector<Mat<D>> F_, P_;
+  // Reference pairs of slot s: k in [start_[s], start_[s+1]): neighbour slot, X_ij = X_j - X_i,
+  // W(|X_ij|), g_ij, and the index of the pair (j, i) in j's list.
+  std::vector<std::size_t> start_;
+  std::vector<int> nj_, rev_;
+  std::vector<Vec<D>> X_, g_;
+  std::vector<double> w_;
+  std::vector<int> slot_of_;  // per particle index: slot or -1
+  std::vector<int> pos_;      // scratch of map_slots: particle id -> index
+  bool built_ = false;
+};
+
+}  // namespace monosph
