@@ -118,6 +118,9 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
   auto bd = p.body();
   const std::size_t n = sim.owned();  // sums over owned particles, then over the ranks
   const Comm& comm = sim.comm();
+  const int kdev = p.find("deviatoric_stress");
+  std::span<Mat3> dev;
+  if (kdev >= 0) dev = p.template view<Mat3>(kdev);
   std::vector<double> out;
   for (auto& it : items_) {
     const auto& s = it->spec;
@@ -132,6 +135,17 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       return f.type == FieldType::Real ? f.real[i * f.ncomp + c]
                                        : static_cast<double>(f.ints[i * f.ncomp + c]);
     };
+    // Elastic energy V (S:S / (4 mu) + p^2 / (2 K)) of a solid particle (0 for the others).
+    auto elastic = [&, ph = p.phase(), mt = p.material(), pr = p.p()](std::size_t i) {
+      if (ph[i] != kSolid) return 0.0;
+      const Material& mm = sim.materials()[mt[i]];
+      double ss = 0;
+      if (kdev >= 0 && mm.shear_modulus > 0) {
+        const Mat3& S = dev[i];
+        ss = S.cwiseProduct(S).sum() / (4 * mm.shear_modulus);
+      }
+      return m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
+    };
     auto weight = [&](std::size_t i) {
       if (it->weight.empty()) return 1.0;
       return it->weight(x[i][0], x[i][1], D == 3 ? x[i][D - 1] : 0.0, sim.time());
@@ -139,23 +153,12 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
     if (s.type == "total_energy") {
       // kinetic + elastic and hourglass-spring energy (solids) + potential of each body's constant
       // body force, -m g.x
-      auto ph = p.phase();
-      auto mt = p.material();
-      auto pr = p.p();
-      const int ks = p.find("deviatoric_stress"), kh = p.find("hourglass_energy");
+      const int kh = p.find("hourglass_energy");
       double e = 0;
       for (std::size_t i = 0; i < n; ++i) {
         if (!in_body(i)) continue;
-        e += 0.5 * m[i] * v[i].squaredNorm() - m[i] * sim.body_force(bd[i]).dot(x[i]);
+        e += 0.5 * m[i] * v[i].squaredNorm() - m[i] * sim.body_force(bd[i]).dot(x[i]) + elastic(i);
         if (kh >= 0) e += p.template view<double>(kh)[i];  // hourglass springs (solid module)
-        if (ph[i] != kSolid) continue;
-        const Material& mm = sim.materials()[mt[i]];
-        double ss = 0;
-        if (ks >= 0 && mm.shear_modulus > 0) {
-          const Mat3& S = p.template view<Mat3>(ks)[i];
-          ss = S.cwiseProduct(S).sum() / (4 * mm.shear_modulus);
-        }
-        e += m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
       }
       out.push_back(comm.sum(e));
     } else if (s.type == "kinetic_energy") {
@@ -164,22 +167,9 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         if (in_body(i)) e += 0.5 * m[i] * v[i].squaredNorm() * weight(i);
       out.push_back(comm.sum(e));
     } else if (s.type == "elastic_energy") {
-      // sum V (S:S / (4 mu) + p^2 / (2 K)) over solid particles
-      const int ks = p.find("deviatoric_stress");
-      auto pr = p.p();
-      auto mt = p.material();
-      auto ph = p.phase();
       double e = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!in_body(i) || ph[i] != kSolid) continue;
-        const Material& mm = sim.materials()[mt[i]];
-        double ss = 0;
-        if (ks >= 0 && mm.shear_modulus > 0) {
-          const Mat3& S = p.template view<Mat3>(ks)[i];
-          ss = S.cwiseProduct(S).sum() / (4 * mm.shear_modulus);
-        }
-        e += m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
-      }
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i)) e += elastic(i);
       out.push_back(comm.sum(e));
     } else if (s.type == "disorder") {
       // RMS over the (solid) particles of the per-particle disorder, in dp
