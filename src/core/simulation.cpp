@@ -417,7 +417,8 @@ template <int D>
 void Simulation<D>::refresh_pair_vectors() {
   // Acoustic step of dual-criteria time stepping: the pair vectors r_ij follow the particles (the
   // forces act along the current directions), the kernel values and factors, the pair set and the
-  // kernel sums stay those of the last configuration update.
+  // kernel sums stay those of the last configuration update; so does the smallest pair distance
+  // that the min-distance guard checks.
   auto x = p_.x();
   const std::size_t n = p_.size();
   const std::array<V, Neighbours<D>::kShifts> shift = nb_.shifts();

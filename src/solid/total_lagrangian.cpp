@@ -175,13 +175,9 @@ void TotalLagrangian<D>::rates(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    Mat<D> F = Mat<D>::Zero(), Fd = Mat<D>::Zero();
-    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
-      const int j = idx_[nj_[k]];
-      F.noalias() += (x[j] - x[i]) * g_[k].transpose();   // G15 Eq. 17
-      Fd.noalias() += (v[j] - v[i]) * g_[k].transpose();  // its rate
-    }
-    L[i] = Fd * F.inverse();  // velocity gradient dv/dx = Fdot F^-1
+    const Mat<D> F = reference_gradient(s, x);   // G15 Eq. 17
+    const Mat<D> Fd = reference_gradient(s, v);  // its rate
+    L[i] = Fd * F.inverse();                     // velocity gradient dv/dx = Fdot F^-1
     drho[i] = 0;              // rho = rho0 / det F: no continuity equation
   }
 }
@@ -198,9 +194,7 @@ void TotalLagrangian<D>::sums(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static) reduction(max : bad)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    Mat<D> F = Mat<D>::Zero();
-    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k)
-      F.noalias() += (x[idx_[nj_[k]]] - x[i]) * g_[k].transpose();  // G15 Eq. 17
+    const Mat<D> F = reference_gradient(s, x);  // G15 Eq. 17
     F_[s] = F;
     Ff[i] = F;
     const double J = F.determinant();

@@ -12,6 +12,7 @@
 // data is per slot and survives the cell-order re-sorting of particles; only the slot -> index
 // map is renewed at every neighbour rebuild. Restarts rebuild the reference data from the
 // checkpointed fields initial_position and reference_volume (deterministic: bit-identical).
+#include <span>
 #include <vector>
 
 #include "core/simulation.hpp"
@@ -41,6 +42,14 @@ class TotalLagrangian {
  private:
   void build(Simulation<D>& sim);  // the reference pairs, once
   void map_slots(Simulation<D>& sim);
+  // sum_j (f_j - f_i) (x) g_ij over the reference pairs of slot s (G15 Eq. 17 for f = x).
+  Mat<D> reference_gradient(std::size_t s, std::span<const Vec<D>> f) const {
+    const int i = idx_[s];
+    Mat<D> G = Mat<D>::Zero();
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k)
+      G.noalias() += (f[idx_[nj_[k]]] - f[i]) * g_[k].transpose();
+    return G;
+  }
 
   std::vector<char> tlb_;  // per body
   int kS_, kF_, kgradv_, kX0_, kV0_, kep_, ksy_;
