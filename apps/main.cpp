@@ -83,6 +83,8 @@ int run_main(int argc, char** argv) {
                       "plot the metric's value instead of its relative error (e.g. a disorder)");
   cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")
       ->check(CLI::PositiveNumber);
+  cmd_study->add_option("--threads", study.threads, "threads per run (default: cores / jobs)")
+      ->check(CLI::PositiveNumber);
 
   StabilityOptions stab;
   auto* cmd_stab = app.add_subcommand(

@@ -313,12 +313,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     std::vector<std::string> head;
     std::vector<std::vector<double>> cols;
     read_csv(csv_path, head, cols);
-    // The column of a probe (vector probes: their x component).
+    // The column of a probe (a vector probe: its x component, or the component named "load_y").
     auto column = [&](const std::string& probe) -> const std::vector<double>* {
-      const auto& spec = *std::find_if(scene.probes.begin(), scene.probes.end(),
-                                       [&](const ProbeSpec& s) { return s.name == probe; });
+      auto spec = std::find_if(scene.probes.begin(), scene.probes.end(),
+                               [&](const ProbeSpec& s) { return s.name == probe; });
       std::string col =
-          spec.type == "momentum" || spec.type == "reaction_force" ? probe + "_x" : probe;
+          spec != scene.probes.end() && (spec->type == "momentum" || spec->type == "reaction_force")
+              ? probe + "_x"
+              : probe;
       auto it = std::find(head.begin(), head.end(), col);
       if (it == head.end() || cols.empty()) return nullptr;
       return &cols[it - head.begin()];

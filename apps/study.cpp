@@ -137,7 +137,7 @@ int run_study(const StudyOptions& opt) {
     if (a == axes.size()) break;
   }
 
-  const int threads = std::max(1, usable_cpus() / opt.jobs);
+  const int threads = opt.threads > 0 ? opt.threads : std::max(1, usable_cpus() / opt.jobs);
   fmt::print("study: {} runs of {}, {} at a time, {} thread{} each, in {}\n", runs.size(),
              base.name, opt.jobs, threads, threads > 1 ? "s" : "", out.string());
   std::vector<ChildRun> jobs;

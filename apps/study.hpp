@@ -12,6 +12,7 @@ struct StudyOptions {
   std::string out;                     // default out/study_<scene name>
   std::string metric;                  // reference metric to plot (default: the scene's first)
   int jobs = 1;                        // runs at once (separate processes)
+  int threads = 0;                     // threads per run (0: the cores / jobs)
   bool plot_value = false;             // plot the metric's value, not its relative error
 };
 

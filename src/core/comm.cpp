@@ -103,6 +103,14 @@ void Comm::bcast(std::span<double> x, int root) const {
     MPI_Bcast(x.data(), static_cast<int>(x.size()), MPI_DOUBLE, root, comm_);
 }
 
+void Comm::nearest(double& d2, double& val) const {
+  if (!parallel()) return;
+  const double best = min(d2);
+  const long who = min(d2 == best ? long(rank_) : long(size_));
+  bcast(std::span<double>(&val, 1), static_cast<int>(who));
+  d2 = best;
+}
+
 std::string Comm::first_message(const std::string& local) const {
   if (!parallel()) return local;
   const long who = min(local.empty() ? long(size_) : long(rank_));

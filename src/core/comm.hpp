@@ -44,6 +44,8 @@ class Comm {
   void barrier() const;
   void bcast(std::string& s, int root) const;
   void bcast(std::span<double> x, int root) const;
+  // The `val` of the rank with the smallest distance d2 (the lowest such rank on a tie), on all.
+  void nearest(double& d2, double& val) const;
   // The message of the lowest rank whose `local` is not empty ("" if none).
   std::string first_message(const std::string& local) const;
   // send[r] goes to rank r; returns what each rank sent here, in rank order.

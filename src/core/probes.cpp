@@ -9,17 +9,6 @@
 
 namespace monosph {
 
-namespace {
-// The value of the rank with the smallest distance d2 (the lowest such rank on a tie).
-void nearest_value(const Comm& comm, double& d2, double& val) {
-  if (!comm.parallel()) return;
-  const double best = comm.min(d2);
-  const long who = comm.min(d2 == best ? long(comm.rank()) : long(comm.size()));
-  comm.bcast(std::span<double>(&val, 1), static_cast<int>(who));
-  d2 = best;
-}
-}  // namespace
-
 template <int D>
 struct Probes<D>::Item {
   ProbeSpec spec;
@@ -93,7 +82,7 @@ Probes<D>::Probes(Simulation<D>& sim) {
         if (d2 < best) best = d2, it->id = p.id()[i];
       }
       double id = static_cast<double>(it->id);
-      nearest_value(sim.comm(), best, id);
+      sim.comm().nearest(best, id);
       it->id = static_cast<std::int64_t>(id);
     }
     if (s.type == "momentum" || s.type == "reaction_force") {
@@ -236,7 +225,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         for (int a = 0; a < D; ++a) d2 += (x[i][a] - s.point[a]) * (x[i][a] - s.point[a]);
         if (d2 < best) best = d2, val = value(i);
       }
-      nearest_value(comm, best, val);
+      comm.nearest(best, val);
       out.push_back(val);
     } else if (s.type == "tracked") {
       auto ids = p.id();

@@ -178,6 +178,17 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
   return s;
 }
 
+// A reference or check names a probe, or one component of a vector probe ("load_y").
+bool names_probe_column(const std::vector<ProbeSpec>& probes, const std::string& name) {
+  for (const auto& ps : probes) {
+    if (ps.name == name) return true;
+    if (ps.type == "momentum" || ps.type == "reaction_force")
+      for (const char* ax : {"_x", "_y", "_z"})
+        if (ps.name + ax == name) return true;
+  }
+  return false;
+}
+
 // A rigid surface (MMB Sect. 3; built by src/rigid): one geometry key, motion, contact parameters.
 // `folder` resolves a relative STL path (the scene file's folder; empty: the working directory).
 SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim,
@@ -694,6 +705,13 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("wall_pressure");
       }
+      if (b.has("damping")) {  // dynamic relaxation to a static state (quasi-static loading)
+        if (body.phase != "solid" && body.phase != "fluid")
+          scene_error(p + ".damping", "applies to solid and fluid bodies");
+        body.damping = b.non_negative("damping", 0.0);
+      } else {
+        b.optional("damping");
+      }
       if (b.has("body_force"))  // replaces the scene's body_force for this body
         body.body_force = b.vector("body_force", dim);
       else
@@ -780,19 +798,38 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       BoundarySpec bc;
       bc.type = b.choice("type", {"fixed", "velocity"});
       bc.name = b.text("name", "bc" + std::to_string(i));
-      if (b.has("body") == b.has("region"))
-        scene_error(p, "give exactly one of 'body' or 'region'");
-      if (b.has("body")) {
+      if (int(b.has("body")) + int(b.has("region")) + int(b.has("point")) != 1)
+        scene_error(p, "give exactly one of 'body', 'region' or 'point'");
+      if (b.has("point")) {
+        bc.point = b.vector("point", dim);
+        b.optional("body");
+        b.optional("region");
+      } else if (b.has("body")) {
         bc.body = b.text("body");
         bool found = false;
         for (const auto& body : s.bodies) found = found || body.name == bc.body;
         if (!found) scene_error(p + ".body", "no body named '" + bc.body + "'");
         b.optional("region");
+        b.optional("point");
       } else {
         bc.region = read_shape(b.node("region"), p + ".region", dim);
         b.optional("body");
+        b.optional("point");
       }
-      if (bc.type == "velocity") bc.velocity_expr = expressions(b, "velocity", dim);
+      if (bc.type == "velocity") {  // "free": that component is not prescribed
+        auto n = b.node("velocity");
+        if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+          scene_error(b.at("velocity"),
+                      "expected a list of " + std::to_string(dim) + " expressions or 'free'");
+        for (int a = 0; a < dim; ++a) {
+          std::string q = b.at("velocity") + "[" + std::to_string(a) + "]";
+          bc.velocity_expr.push_back(as_text(n[a], q));
+          if (bc.velocity_expr.back() != "free") check_expression(bc.velocity_expr.back(), q);
+        }
+        if (std::all_of(bc.velocity_expr.begin(), bc.velocity_expr.end(),
+                        [](const std::string& e) { return e == "free"; }))
+          scene_error(b.at("velocity"), "prescribes no component (use at least one expression)");
+      }
       b.finish();
       s.boundaries.push_back(std::move(bc));
     }
@@ -991,9 +1028,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max",
                                         "min", "mean", "peak_ratio"});
       rs.start = q.non_negative("start", 0.0);
-      bool found = false;
-      for (const auto& ps : s.probes) found = found || ps.name == rs.probe;
-      if (!found) scene_error(p + ".probe", "no probe named '" + rs.probe + "'");
+      if (!names_probe_column(s.probes, rs.probe))
+        scene_error(p + ".probe", "no probe named '" + rs.probe + "'");
       q.finish();
       s.references.push_back(std::move(rs));
     }
@@ -1015,9 +1051,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       if (q.has("max")) c.max = q.number("max");
       if (!q.has("min") && !q.has("max")) scene_error(p, "give min, max or both");
       c.start = q.non_negative("start", 0.0);
-      bool found = false;
-      for (const auto& ps : s.probes) found = found || ps.name == c.probe;
-      if (!found) scene_error(p + ".probe", "no probe named '" + c.probe + "'");
+      if (!names_probe_column(s.probes, c.probe))
+        scene_error(p + ".probe", "no probe named '" + c.probe + "'");
       q.finish();
       s.checks.push_back(std::move(c));
     }

@@ -103,6 +103,7 @@ struct BodySpec {
   std::string viscous_form = "auto";
   int erosion = 0;                // remove particles with D >= 1: 0 never, 1 all, 2 surface only
   Point body_force;               // replaces the scene's body_force when given
+  double damping = 0;             // mass-proportional damping rate c [1/s]: a -= c v
   bool fill_rest = false;         // takes only the lattice nodes no other body takes
   bool cluster_per_part = false;  // rigid: one cluster per part of a union shape (else one)
   Point angular_velocity;         // rigid: initial (2D: one value; 3D: a vector)
@@ -122,7 +123,8 @@ struct ContactSpec {
 struct BoundarySpec {
   std::string type;                        // fixed | velocity
   std::string body;                        // whole body, or
-  std::optional<Shape> region;             // particles inside a region
+  std::optional<Shape> region;             // particles inside a region, or
+  std::optional<Point> point;              // the one particle nearest to a point at the start
   std::vector<std::string> velocity_expr;  // in x, y, z, t
   std::string name;                        // probe name for the reaction force
 };

@@ -50,6 +50,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     info.shift_speed = b.shift_speed, info.shift_R = b.shift_R, info.shift_n = b.shift_n;
     info.no_slip = b.no_slip;
     info.non_negative_wall_pressure = b.non_negative_wall_pressure;
+    info.damping = b.damping;
     const Point& bf = b.body_force.empty() ? scene_.body_force : b.body_force;
     for (int a = 0; a < D; ++a) info.body_force[a] = bf[a];
     bodies_.push_back(std::move(info));
@@ -65,6 +66,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   if (scene_.newmark_gamma != 0.5) kaprev_ = p_.add_field("previous_acceleration", D);
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   for (const auto& b : bodies_) gb_.push_back(Eigen::Map<const V>(b.body_force.data()));
+  for (const auto& b : bodies_) damping_.push_back(b.damping), damped_ = damped_ || b.damping > 0;
   for (const auto& m : scene_.materials) wave_speed_.push_back(m.wave_speed());
   if (!scene_.boundaries.empty()) {
     kbc_ = p_.add_field("boundary", 1, FieldType::Int, false);
@@ -72,8 +74,11 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
       const auto& bc = scene_.boundaries[k];
       std::vector<Expression> ex;
       for (int a = 0; a < static_cast<int>(bc.velocity_expr.size()); ++a)
-        ex.emplace_back(bc.velocity_expr[a],
-                        "boundary_conditions[" + std::to_string(k) + "].velocity");
+        if (bc.velocity_expr[a] == "free")  // an empty expression: the component moves freely
+          ex.emplace_back();
+        else
+          ex.emplace_back(bc.velocity_expr[a],
+                          "boundary_conditions[" + std::to_string(k) + "].velocity");
       bc_velocity_.push_back(std::move(ex));
     }
     reactions_.assign(scene_.boundaries.size(), V::Zero());
@@ -101,13 +106,27 @@ void Simulation<D>::create_particles() {
       long count = 0;
       for (std::size_t i = 0; i < p_.size(); ++i) {
         bool in;
-        if (s.region) {
+        if (s.point) {
+          in = false;  // chosen below
+        } else if (s.region) {
           Point xi(x[i].data(), x[i].data() + D);
           in = s.region->contains(xi);
         } else {
           in = scene_.bodies[bd[i]].name == s.body;
         }
         if (in) bc[i] = static_cast<std::int64_t>(k + 1), ++count;
+      }
+      if (s.point) {  // the particle nearest to the point (the lowest rank's on a tie)
+        double best = std::numeric_limits<double>::infinity(), id = -1;
+        for (std::size_t i = 0; i < p_.size(); ++i) {
+          double d2 = 0;
+          for (int a = 0; a < D; ++a) d2 += (x[i][a] - (*s.point)[a]) * (x[i][a] - (*s.point)[a]);
+          if (d2 < best) best = d2, id = static_cast<double>(p_.id()[i]);
+        }
+        comm_.nearest(best, id);
+        for (std::size_t i = 0; i < p_.size(); ++i)
+          if (static_cast<double>(p_.id()[i]) == id)
+            bc[i] = static_cast<std::int64_t>(k + 1), ++count;
       }
       if (comm_.sum(count) == 0)
         throw InputError("boundary_conditions[" + std::to_string(k) + "]: selects no particle");
@@ -357,7 +376,8 @@ void Simulation<D>::apply_bc_velocity(double t) {
     if (!bc[i] || bc_velocity_[bc[i] - 1].empty()) continue;
     const auto& ex = bc_velocity_[bc[i] - 1];
     const double zz = D == 3 ? x[i][D - 1] : 0.0;
-    for (int a = 0; a < D; ++a) v[i][a] = ex[a](x[i][0], x[i][1], zz, t);
+    for (int a = 0; a < D; ++a)
+      if (!ex[a].empty()) v[i][a] = ex[a](x[i][0], x[i][1], zz, t);
   }
 }
 
@@ -530,6 +550,13 @@ void Simulation<D>::compute_forces(bool configuration) {
   const std::size_t n = p_.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) a[i] = gb_[bd[i]];
+  if (damped_) {  // mass-proportional damping, a -= c v, on the particles without a prescribed path
+    auto v = p_.v();
+    const std::int64_t* bc = kbc_ >= 0 ? p_.template view<std::int64_t>(kbc_).data() : nullptr;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!bc || !bc[i]) a[i] -= damping_[bd[i]] * v[i];
+  }
   for (auto& m : modules_) m->forces(*this);
   exchange({p_.find("acceleration")});  // ghosts then kick and drift as their owners do
   clock.lap("forces");
@@ -539,7 +566,11 @@ void Simulation<D>::compute_forces(bool configuration) {
     for (auto& r : reactions_) r.setZero();
     const std::size_t own = owned();
     for (std::size_t i = 0; i < own; ++i)
-      if (bc[i]) reactions_[bc[i] - 1] -= mass[i] * a[i];
+      if (bc[i]) {
+        const auto& ex = bc_velocity_[bc[i] - 1];
+        for (int c = 0; c < D; ++c)  // a free component has no reaction
+          if (ex.empty() || !ex[c].empty()) reactions_[bc[i] - 1][c] -= mass[i] * a[i][c];
+      }
     if (dec_)
       for (auto& r : reactions_) comm_.sum(std::span<double>(r.data(), D));
   }

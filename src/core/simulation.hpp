@@ -82,6 +82,7 @@ struct BodyInfo {
   int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls,
                   // -3 rigid)
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)
+  double damping = 0;                  // mass-proportional damping rate [1/s]
 };
 
 // Wall time of each pass of a step, summed over the run (the slowest pass shows in summary.json).
@@ -217,6 +218,8 @@ class Simulation {
   int kbc_ = -1;  // field "boundary" (1 + index of the boundary condition, 0 = free)
   V g_;
   std::vector<V> gb_;  // per body
+  std::vector<double> damping_;  // per body: mass-proportional damping rate [1/s]
+  bool damped_ = false;
   double t_ = 0, dt_ = 0, dt0_ = 0;
   double t_configuration_ = -1;  // dual-criteria: time of the next configuration update
   long configuration_updates_ = 0;
