@@ -896,6 +896,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       // Zhang et al. 2024, Eq. 21; 0 switches dual-criteria stepping off (a study can vary it).
       s.advection_cfl = dc.non_negative("advection_cfl", 0.2);
       s.acoustic_cfl = dc.positive("acoustic_cfl", 0.4);  // Eq. 22
+      s.frozen_kernel = dc.choice("kernel", {"refreshed", "frozen"}, "refreshed") == "frozen";
       if (s.advection_cfl > 1.0) scene_error(dc.at("advection_cfl"), "must not exceed 1");
       if (s.acoustic_cfl > 1.0) scene_error(dc.at("acoustic_cfl"), "must not exceed 1");
       dc.finish();

@@ -193,6 +193,7 @@ struct Scene {
   // (pair geometry and kernel sums) is updated every advection step CFL_ad h / |v|max; the
   // acoustic steps in between use CFL_ac h / (c + |v|max). Off when advection_cfl is 0.
   double advection_cfl = 0, acoustic_cfl = 0.4;
+  bool frozen_kernel = false;  // acoustic steps keep the kernel values too (Zhang et al.)
   double max_mach = 0.5, min_distance = 0.1;
   double output_every = 0, checkpoint_every = 0, probe_every = 0;
   std::vector<std::string> output_fields;

@@ -26,8 +26,11 @@ class Module {
  public:
   virtual ~Module() = default;
   virtual std::string name() const = 0;
-  virtual void on_create(Simulation<D>&) {}         // fresh particles exist (not on restart)
-  virtual void sums(Simulation<D>&) {}              // kernel sums at the new positions
+  virtual void on_create(Simulation<D>&) {}  // fresh particles exist (not on restart)
+  virtual void sums(Simulation<D>&) {}       // kernel sums at the new positions
+  // An acoustic step of dual-criteria stepping: the kernel sums stay, the pair vectors moved;
+  // refresh what must follow the positions (e.g. deformation gradients).
+  virtual void acoustic_step(Simulation<D>&) {}
   virtual void rates(Simulation<D>&) {}             // rates from the half-step velocities
   virtual void drift(Simulation<D>&, double dt) {}  // integrate module state over dt
   virtual void constitutive(Simulation<D>&) {}      // per particle: EOS, stress
@@ -217,7 +220,7 @@ class Simulation {
   std::vector<double> removed_mass_;  // per body
   int kbc_ = -1;  // field "boundary" (1 + index of the boundary condition, 0 = free)
   V g_;
-  std::vector<V> gb_;  // per body
+  std::vector<V> gb_;            // per body
   std::vector<double> damping_;  // per body: mass-proportional damping rate [1/s]
   bool damped_ = false;
   double t_ = 0, dt_ = 0, dt0_ = 0;
