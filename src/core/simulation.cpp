@@ -556,14 +556,14 @@ void Simulation<D>::compute_forces(bool configuration) {
   auto a = p_.a();
   auto bd = p_.body();
   const std::size_t n = p_.size();
+  // Body force, and mass-proportional damping a -= c v on the particles without a prescribed
+  // path (one pass; c = 0 for undamped bodies).
+  auto v = p_.v();
+  const std::int64_t* bc = kbc_ >= 0 ? p_.template view<std::int64_t>(kbc_).data() : nullptr;
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) a[i] = gb_[bd[i]];
-  if (damped_) {  // mass-proportional damping, a -= c v, on the particles without a prescribed path
-    auto v = p_.v();
-    const std::int64_t* bc = kbc_ >= 0 ? p_.template view<std::int64_t>(kbc_).data() : nullptr;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i)
-      if (!bc || !bc[i]) a[i] -= damping_[bd[i]] * v[i];
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = gb_[bd[i]];
+    if (damped_ && (!bc || !bc[i])) a[i] -= damping_[bd[i]] * v[i];
   }
   for (auto& m : modules_) m->forces(*this);
   exchange({p_.find("acceleration")});  // ghosts then kick and drift as their owners do
