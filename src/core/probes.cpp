@@ -1,6 +1,9 @@
 #include "probes.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -8,6 +11,50 @@
 #include "expression.hpp"
 
 namespace monosph {
+
+std::vector<long> piece_sizes(const std::vector<double>& xyz, int dim, double link) {
+  const std::size_t n = xyz.size() / dim;
+  // Points sorted by their cell of side `link`; a point's links lie in the 3^dim cells around it.
+  using Cell = std::array<long, 3>;
+  std::vector<Cell> cell(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    cell[i] = {0, 0, 0};
+    for (int a = 0; a < dim; ++a) cell[i][a] = static_cast<long>(std::floor(xyz[i * dim + a] / link));
+  }
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cell[a] < cell[b]; });
+  std::vector<Cell> sorted(n);
+  for (std::size_t k = 0; k < n; ++k) sorted[k] = cell[order[k]];
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  const int reach = dim == 3 ? 1 : 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -reach; dz <= reach; ++dz) {
+          const Cell c = {cell[i][0] + dx, cell[i][1] + dy, cell[i][2] + dz};
+          auto [lo, hi] = std::equal_range(sorted.begin(), sorted.end(), c);
+          for (auto k = lo; k != hi; ++k) {
+            const std::size_t j = order[k - sorted.begin()];
+            if (j <= i) continue;
+            double d2 = 0;
+            for (int a = 0; a < dim; ++a) d2 += std::pow(xyz[i * dim + a] - xyz[j * dim + a], 2);
+            if (d2 < link * link) parent[root(i)] = root(j);
+          }
+        }
+  std::vector<long> count(n, 0);
+  for (std::size_t i = 0; i < n; ++i) ++count[root(i)];
+  std::vector<long> sizes;
+  for (long c : count)
+    if (c > 0) sizes.push_back(c);
+  std::sort(sizes.rbegin(), sizes.rend());
+  return sizes;
+}
 
 template <int D>
 struct Probes<D>::Item {
@@ -234,6 +281,29 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         if (ids[i] == it->id) val = value(i), found = 1;
       val = comm.sum(val), found = comm.sum(found);  // one owner
       out.push_back(found > 0 ? val : std::numeric_limits<double>::quiet_NaN());
+    } else if (s.type == "pieces") {
+      // Connected pieces (particles closer than 1.5 dp linked) with at least min_particles
+      // particles: a body broken into segments or fragments. Positions gather on rank 0.
+      std::vector<double> local;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_body(i))
+          for (int a = 0; a < D; ++a) local.push_back(x[i][a]);
+      std::vector<std::vector<char>> send(comm.size());
+      send[0].resize(local.size() * sizeof(double));
+      if (!local.empty()) std::memcpy(send[0].data(), local.data(), send[0].size());
+      long count = 0;
+      if (comm.root()) {
+        std::vector<double> all;
+        for (const auto& buf : comm.exchange(send)) {
+          const std::size_t m0 = all.size();
+          all.resize(m0 + buf.size() / sizeof(double));
+          if (!buf.empty()) std::memcpy(all.data() + m0, buf.data(), buf.size());
+        }
+        for (long c : piece_sizes(all, D, 1.5 * sim.dp())) count += c >= s.min_particles;
+      } else {
+        comm.exchange(send);
+      }
+      out.push_back(static_cast<double>(comm.sum(count)));
     } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
       double sum = 0;
       const auto& rm = sim.removed_mass();

@@ -23,6 +23,10 @@ class Probes {
   std::vector<std::string> columns_;
 };
 
+// Sizes (particle counts, largest first) of the connected pieces of a point set: two points
+// are linked when closer than `link`. xyz holds dim coordinates per point.
+std::vector<long> piece_sizes(const std::vector<double>& xyz, int dim, double link);
+
 // Evaluates a reference measure on the series (t, y) restricted to t >= start.
 // Returns NaN when the series cannot give it (e.g. fewer than two zero crossings).
 double measure_series(const std::string& measure, const std::vector<double>& t,

@@ -944,7 +944,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "reaction_force", "surface_force",  "surface_contacts", "removed_mass",
         "field_max",      "field_min",      "extent",           "surface_displacement",
         "fluid_force",    "penetration",    "grain_impacts",    "contact_pairs",
-        "total_energy"};
+        "total_energy",   "pieces"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -987,6 +987,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         ps.point = q.vector("point", dim);
       else
         q.optional("point");
+      if (ps.type == "pieces") {
+        ps.min_particles = q.integer("min_particles", ps.min_particles);
+        if (ps.min_particles < 1) scene_error(q.at("min_particles"), "must be at least 1");
+      } else {
+        q.optional("min_particles");
+      }
       if (on_surface) {
         bool found = false;
         std::vector<std::string> names;

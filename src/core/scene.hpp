@@ -152,6 +152,7 @@ struct ProbeSpec {
   std::string target;  // penetration: the body penetrated (empty: every solid particle)
   int component = -1;
   Point point;
+  int min_particles = 10;  // pieces: smaller clusters (spray, single particles) are not counted
 };
 
 struct ReferenceSpec {

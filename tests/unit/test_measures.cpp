@@ -48,3 +48,26 @@ TEST(Measures, PeriodFromZeroCrossings) {
   series(0, 0.1, t, y);
   EXPECT_NEAR(measure_series("period", t, y, 0), 0.25, 1e-4);
 }
+
+TEST(Measures, PiecesAreTheLinkedClustersOfAPointSet) {
+  // Two 2D lattices 10 x 10 (spacing 1) a gap of 1.6 apart, one lone point, one pair: linked
+  // below 1.5 the lattices are two pieces of 100, the pair and the lone point pieces of 2 and 1.
+  std::vector<double> xy;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      xy.insert(xy.end(), {double(i), double(j)});
+      xy.insert(xy.end(), {10.6 + i, double(j)});
+    }
+  xy.insert(xy.end(), {-5.0, -5.0, 30.0, 0.0, 31.4, 0.0});
+  EXPECT_EQ(piece_sizes(xy, 2, 1.5), (std::vector<long>{100, 100, 2, 1}));
+  // Closing the gap to 1.4 joins the lattices: diagonal and straight links both count.
+  for (std::size_t k = 0; k < xy.size(); k += 2)
+    if (xy[k] > 10 && xy[k] < 25) xy[k] -= 0.2;
+  EXPECT_EQ(piece_sizes(xy, 2, 1.5).front(), 200);
+  // 3D: a column of points spacing 1 split by a gap of 2 at z = 5 is two pieces of 5; it is one
+  // when the link reaches 2.5. Coordinates far from the origin and negative cells alike.
+  std::vector<double> xyz;
+  for (int k = 0; k < 10; ++k) xyz.insert(xyz.end(), {-1e3, 7.0, k + (k >= 5 ? 1.0 : 0.0) - 3});
+  EXPECT_EQ(piece_sizes(xyz, 3, 1.5), (std::vector<long>{5, 5}));
+  EXPECT_EQ(piece_sizes(xyz, 3, 2.5), (std::vector<long>{10}));
+}
