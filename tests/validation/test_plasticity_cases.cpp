@@ -53,7 +53,7 @@ TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
   EXPECT_NEAR(t["length"].back(), 29.9e-3, 0.12 * 29.9e-3);
   EXPECT_NEAR(t["diameter_x"].back(), 13.5e-3, 0.20 * 13.5e-3);
   EXPECT_NEAR(t["diameter_y"].back(), t["diameter_x"].back(), 0.05 * t["diameter_x"].back());
-  EXPECT_GT(max_of(t["max_plastic_strain"]), 1.0);
+  EXPECT_GT(max_of(t["max_plastic_strain"]), 0.8);  // 1.00 at 6 across, 2.16 at 29 across
   EXPECT_GT(max_of(t["max_temperature"]), 292 + 50.0);  // adiabatic heating at the impact face
   EXPECT_GT(min_of(t["min_distance"]), 0.1);
 }
@@ -74,23 +74,32 @@ TEST(TaylorBar, PlaneStrainImpactRunsToRest) {
   EXPECT_LT(max_of(t["max_plastic_strain"]), 4.0);
 }
 
-TEST(MetalCutting, ChipFormsAndSeparates) {
-  // 40 um particles (2.5 over the 0.1 mm depth of cut), 40 us of the 100 us cut: a chip rises
-  // above the 0.5 mm surface, failed particles are eroded along the cut, and the mean cutting
-  // force lies in the band of the finer runs (32 kN/m at 20 um, 46 kN/m at 40 um).
-  const std::string out = out_dir("cutting_coarse");
+TEST(MetalCutting, ChipSegmentBreaksOff) {
+  // The scene (20 um, 10 particles over the 0.2 mm depth of cut), 60 us of the 150 us cut: a
+  // shear band from the tool edge to the free surface fails and the first chip segment breaks
+  // off (the `pieces` probe goes from 1 to 2; 50.4 us in the full run), the cutting force drops
+  // to less than half its mean as it does, failed particles are eroded, and the mean force lies
+  // near the full run's 88 kN/m (cases/metal_cutting/README.md).
+  const std::string out = out_dir("cutting_segment");
   auto r = run_monosph("run " + source("cases/metal_cutting/scene.yaml") + " --out " + out +
-                       " --quiet --set dp=4e-5 end_time=4e-5 output.every=1");
+                       " --quiet --set end_time=6e-5 output.every=1");
   ASSERT_EQ(r.code, 0) << r.output;
   auto t = read_csv(out + "/probes.csv");
-  double sum = 0;
+  double sum = 0, low = 1e30, broke = -1;
   int count = 0;
-  for (std::size_t k = 0; k < t["time"].size(); ++k)
-    if (t["time"][k] > 15e-6) sum += t["cutting_force_x"][k], ++count;
-  ASSERT_GT(count, 50);
-  EXPECT_GT(sum / count, 20e3);
-  EXPECT_LT(sum / count, 60e3);
-  EXPECT_GT(max_of(t["chip_top"]), 0.65e-3);
+  for (std::size_t k = 0; k < t["time"].size(); ++k) {
+    if (broke < 0 && t["pieces"][k] >= 2) broke = t["time"][k];
+    if (t["time"][k] < 15e-6) continue;
+    sum += t["cutting_force_x"][k], ++count;
+    low = std::min(low, t["cutting_force_x"][k]);
+  }
+  ASSERT_GT(count, 100);
+  EXPECT_EQ(t["pieces"].front(), 1.0);
+  EXPECT_GT(broke, 30e-6) << "no chip segment broke off";
+  EXPECT_EQ(t["pieces"].back(), 2.0);
+  EXPECT_GT(sum / count, 60e3);
+  EXPECT_LT(sum / count, 120e3);
+  EXPECT_LT(low, 0.5 * sum / count);  // the force drop of the breaking segment
   EXPECT_GT(t["removed_mass"].back(), 0.0);
   EXPECT_GT(max_of(t["max_plastic_strain"]), 1.0);
   EXPECT_GT(min_of(t["min_distance"]), 0.2);
