@@ -19,7 +19,8 @@ std::vector<long> piece_sizes(const std::vector<double>& xyz, int dim, double li
   std::vector<Cell> cell(n);
   for (std::size_t i = 0; i < n; ++i) {
     cell[i] = {0, 0, 0};
-    for (int a = 0; a < dim; ++a) cell[i][a] = static_cast<long>(std::floor(xyz[i * dim + a] / link));
+    for (int a = 0; a < dim; ++a)
+      cell[i][a] = static_cast<long>(std::floor(xyz[i * dim + a] / link));
   }
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);

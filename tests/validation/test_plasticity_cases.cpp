@@ -53,7 +53,7 @@ TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
   EXPECT_NEAR(t["length"].back(), 29.9e-3, 0.12 * 29.9e-3);
   EXPECT_NEAR(t["diameter_x"].back(), 13.5e-3, 0.20 * 13.5e-3);
   EXPECT_NEAR(t["diameter_y"].back(), t["diameter_x"].back(), 0.05 * t["diameter_x"].back());
-  EXPECT_GT(max_of(t["max_plastic_strain"]), 0.8);  // 1.00 at 6 across, 2.16 at 29 across
+  EXPECT_GT(max_of(t["max_plastic_strain"]), 0.8);      // 1.00 at 6 across, 2.16 at 29 across
   EXPECT_GT(max_of(t["max_temperature"]), 292 + 50.0);  // adiabatic heating at the impact face
   EXPECT_GT(min_of(t["min_distance"]), 0.1);
 }
