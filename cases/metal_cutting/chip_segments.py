@@ -1,50 +1,27 @@
 #!/usr/bin/python3
 """Chip segments of a metal_cutting run: python3 chip_segments.py OUT_DIR [PNG [OUT_DIR2]].
 
-Counts the pieces of chip above the uncut surface in the last frame (particles closer than
-1.5 dp linked; pieces of 20 particles or more) and the segment pitch from the cutting force:
+Lists when the `pieces` probe (1 + the chip segments broken off) changes and gives the segment
+pitch from the cutting force:
 the mean time between the deep force drops (below half the mean force) times the tool speed.
 Needs Debian's python3-vtk9, python3-numpy and python3-matplotlib (for the PNG)."""
-import csv, glob, json, re, sys
+import csv, glob, re, sys
 
 import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 out = sys.argv[1]
-summary = json.load(open(out + "/summary.json"))
-dp = summary["dp"]
-surface, speed = 5.0e-4, 10.0  # uncut surface height (m) and tool speed (m/s) of scene.yaml
+speed = 10.0  # tool speed (m/s) of scene.yaml
 frames = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(glob.glob(out + "/*.pvd")[0]).read())
 
 
-def load(name):
+def load(run, name):
     r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(out + "/" + name)
+    r.SetFileName(run + "/" + name)
     r.Update()
     g = r.GetOutput()
     return vtk_to_numpy(g.GetPoints().GetData())[:, :2], g
-
-
-def pieces(x):
-    """Connected pieces of the chip (points above the uncut surface), largest first."""
-    chip = np.where(x[:, 1] > surface + 0.5 * dp)[0]
-    p = x[chip]
-    label = -np.ones(len(p), int)
-    sizes = []
-    for s in range(len(p)):
-        if label[s] >= 0:
-            continue
-        label[s] = len(sizes)
-        stack, n = [s], 0
-        while stack:
-            i = stack.pop()
-            n += 1
-            near = np.where((label < 0) & (np.sum((p - p[i]) ** 2, axis=1) < (1.5 * dp) ** 2))[0]
-            label[near] = len(sizes)
-            stack.extend(near.tolist())
-        sizes.append(n)
-    return sorted([n for n in sizes if n >= 20], reverse=True)
 
 
 rows = list(csv.DictReader(open(out + "/probes.csv")))
@@ -67,8 +44,8 @@ print("deep force drops at t = %s us" % ", ".join("%.1f" % (d * 1e6) for d in dr
 if len(drops) > 1:
     period = np.diff(drops).mean()
     print("segment period %.1f us -> pitch %.0f um of tool travel" % (period * 1e6, period * speed * 1e6))
-x, _ = load(frames[-1][1])
-print("chip pieces in the last frame (particles): %s" % pieces(x))
+changes = [(t[k], p) for k, p in enumerate(float(r["pieces"]) for r in rows) if k == 0 or p != float(rows[k - 1]["pieces"])]
+print("pieces: %s" % ", ".join("%d from %.1f us" % (p, tk * 1e6) for tk, p in changes))
 if len(sys.argv) > 2:
     import matplotlib
 
@@ -83,8 +60,7 @@ if len(sys.argv) > 2:
         label = "hourglass control" if r == 0 else "no hourglass control (AV + AS)"
         for c, w in enumerate(want):
             tm, name = min(frames, key=lambda q: abs(float(q[0]) - w))
-            out = run
-            x, g = load(name)
+            x, g = load(run, name)
             tool = 3.02e-3 - speed * float(tm)  # tool tip x (scene.yaml)
             for k, (field, hi, cm) in enumerate([("von_mises", 6e8, "jet"), ("damage", 1, "jet")]):
                 a = ax[2 * r + k, c]

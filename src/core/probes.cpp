@@ -44,7 +44,10 @@ std::vector<long> piece_sizes(const std::vector<double>& xyz, int dim, double li
             const std::size_t j = order[k - sorted.begin()];
             if (j <= i) continue;
             double d2 = 0;
-            for (int a = 0; a < dim; ++a) d2 += std::pow(xyz[i * dim + a] - xyz[j * dim + a], 2);
+            for (int a = 0; a < dim; ++a) {
+              const double d = xyz[i * dim + a] - xyz[j * dim + a];
+              d2 += d * d;
+            }
             if (d2 < link * link) parent[root(i)] = root(j);
           }
         }
@@ -292,18 +295,14 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       std::vector<std::vector<char>> send(comm.size());
       send[0].resize(local.size() * sizeof(double));
       if (!local.empty()) std::memcpy(send[0].data(), local.data(), send[0].size());
-      long count = 0;
-      if (comm.root()) {
-        std::vector<double> all;
-        for (const auto& buf : comm.exchange(send)) {
-          const std::size_t m0 = all.size();
-          all.resize(m0 + buf.size() / sizeof(double));
-          if (!buf.empty()) std::memcpy(all.data() + m0, buf.data(), buf.size());
-        }
-        for (long c : piece_sizes(all, D, 1.5 * sim.dp())) count += c >= s.min_particles;
-      } else {
-        comm.exchange(send);
+      std::vector<double> all;  // filled on rank 0 only
+      for (const auto& buf : comm.exchange(send)) {
+        const std::size_t m0 = all.size();
+        all.resize(m0 + buf.size() / sizeof(double));
+        if (!buf.empty()) std::memcpy(all.data() + m0, buf.data(), buf.size());
       }
+      long count = 0;
+      for (long c : piece_sizes(all, D, 1.5 * sim.dp())) count += c >= s.min_particles;
       out.push_back(static_cast<double>(comm.sum(count)));
     } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
       double sum = 0;
