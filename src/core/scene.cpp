@@ -674,6 +674,16 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("hourglass");
       }
+      if (b.has("self_contact")) {
+        if (body.phase != "solid") scene_error(p + ".self_contact", "applies to solid bodies only");
+        MapReader sc(b.node("self_contact"), p + ".self_contact");
+        body.self_contact = sc.positive("distance");
+        if (body.self_contact >= 1)
+          scene_error(p + ".self_contact.distance", "must be below 1 (a fraction of dp)");
+        sc.finish();
+      } else {
+        b.optional("self_contact");
+      }
       if (b.has("shifting")) {  // delta-plus particle shifting (Sun et al. 2017)
         if (body.phase != "fluid") scene_error(p + ".shifting", "applies to fluid bodies only");
         MapReader sh(b.node("shifting"), p + ".shifting");

@@ -81,6 +81,9 @@ struct BodySpec {
   double as_epsilon = 0, as_n = 4;            // artificial stress (MMB Eq. 19-20)
   double delta = 0;                           // density diffusion (MMB Eq. 21)
   double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
+  // Self-contact of a solid body: Hertz spheres of diameter self_contact dp between its own
+  // particles (0: off). A floor under the pair distance, where the kernel gradient vanishes.
+  double self_contact = 0;
   int hg_reference = 0;  // error vector against: 0 initial (MMB), 1 intermediate, 2 least squares
   // Stress divergence: false = normalised gradient (MMB Eq. 10-11); true = corrected gradient,
   // the adjoint of the corrected velocity gradient (Bonet & Lok 1999; docs/theory.md).

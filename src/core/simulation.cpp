@@ -43,6 +43,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     info.formulation = b.formulation;
     info.laplacian_zeta = b.laplacian_zeta;
     info.hg_plastic_switch = b.hg_plastic_switch;
+    info.self_contact = b.self_contact;
     info.total_lagrangian = b.total_lagrangian;
     info.temperature = b.temperature;
     info.erosion = b.erosion;

@@ -86,6 +86,7 @@ struct BodyInfo {
                   // -3 rigid)
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)
   double damping = 0;                  // mass-proportional damping rate [1/s]
+  double self_contact = 0;             // Hertz core diameter between own particles, in dp (0 off)
 };
 
 // Wall time of each pass of a step, summed over the run (the slowest pass shows in summary.json).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/sph_equations.hpp"
 #include "elasticity.hpp"
@@ -46,6 +47,7 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
     any_plastic_ = any_plastic_ || m.plasticity.on;
     any_damage_ = any_damage_ || m.damage.on;
     any_erosion_ = any_erosion_ || (m.damage.on && b.erosion > 0);
+    any_self_contact_ = any_self_contact_ || b.self_contact > 0;
   }
   if (any_plastic_) {
     kep_ = p.add_field("plastic_strain", 1, FieldType::Real, true);
@@ -518,6 +520,50 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     omega2_[i] = 2.0 * b.hg_xi * (1 - b.hg_chi) * kappa / rho[i];
   }
   if (tl_) tl_->forces(sim, omega2_, hge);  // G15 Eq. 24 and 32
+  if (any_self_contact_) self_contact(sim);
+}
+
+template <int D>
+void SolidModule<D>::self_contact(Simulation<D>& sim) {
+  // Hertz contact of two spheres of diameter d_c = self_contact dp (Johnson 1985, Eq. 4.23):
+  // F = 4/3 E* sqrt(R*) delta^1.5, delta = d_c - r, R* = d_c/4, 1/E* = 2 (1 - nu^2)/E; per depth
+  // dp in 2D. Each particle sums its own side of every pair: exactly opposite forces.
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  auto a = p.a();
+  auto m = p.m();
+  auto ph = p.phase();
+  auto bd = p.body();
+  auto mt = p.material();
+  const auto& bodies = sim.bodies();
+  const auto& mats = sim.materials();
+  const double dp = sim.dp(), depth = D == 2 ? dp : 1.0;
+  const std::size_t n = p.size();
+  contact_w2_.assign(n, 0.0);
+#pragma omp parallel for schedule(runtime)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] != kSolid) continue;
+    const double dc = bodies[bd[i]].self_contact * dp;
+    if (!(dc > 0)) continue;
+    const Material& mat = mats[mt[i]];
+    const double K = mat.bulk_modulus, mu = mat.shear_modulus;
+    const double nu = (3 * K - 2 * mu) / (2 * (3 * K + mu));
+    const double estar = mat.youngs_modulus() / (2 * (1 - nu * nu)), rstar = 0.25 * dc;
+    Vec<D> f = Vec<D>::Zero();
+    double kn = 0;
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (bd[j] != bd[i]) continue;
+      const double r = pl.r[k].norm();
+      if (r >= dc || r == 0) continue;
+      const double delta = dc - r;
+      f += (4.0 / 3.0 * estar * std::sqrt(rstar) * delta * std::sqrt(delta) / depth / r) * pl.r[k];
+      // dF/d(delta), at an overlap of at least 0.1 R (as the grain contact)
+      kn += 2.0 * estar * std::sqrt(rstar * std::max(delta, 0.05 * dc)) / depth;
+    }
+    a[i] += f / m[i];
+    contact_w2_[i] = kn / m[i];
+  }
 }
 
 template <int D>
@@ -531,8 +577,15 @@ double SolidModule<D>::max_dt(Simulation<D>& sim) {
   const std::size_t n = sim.owned();
 #pragma omp parallel for reduction(max : w2) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) w2 = std::max(w2, omega2_[i]);
-  if (w2 <= 0) return std::numeric_limits<double>::infinity();
-  return 3.0 * sim.scene().cfl / std::sqrt(w2);
+  double dt =
+      w2 > 0 ? 3.0 * sim.scene().cfl / std::sqrt(w2) : std::numeric_limits<double>::infinity();
+  if (any_self_contact_ && contact_w2_.size() == sim.particles().size()) {
+    double c2 = 0;  // self-contact springs: 20 steps per contact period, as the grain contact
+#pragma omp parallel for reduction(max : c2) schedule(runtime)
+    for (std::size_t i = 0; i < n; ++i) c2 = std::max(c2, contact_w2_[i]);
+    if (c2 > 0) dt = std::min(dt, 0.1 * std::numbers::pi / std::sqrt(c2));
+  }
+  return dt;
 }
 
 template class SolidModule<2>;

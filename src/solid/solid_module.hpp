@@ -52,6 +52,10 @@ class SolidModule : public Module<D> {
   // Plasticity, heating and damage (MMB Sect. 2.2-2.3), only when a solid material has them.
   void plastic_return(Simulation<D>& sim, double dt);
   void erode(Simulation<D>& sim);
+  // Hertz self-contact between particles of one body (`self_contact`), a floor under r_ij.
+  void self_contact(Simulation<D>& sim);
+  bool any_self_contact_ = false;
+  std::vector<double> contact_w2_;  // self-contact stiffness / mass per particle (last forces)
   // Non-hourglass formulation (Zhang et al. 2024): time integral of the Laplacian of v.
   void accumulate_laplacian(Simulation<D>& sim, double dt);
   int klap_ = -1;

@@ -36,6 +36,8 @@ const Case kCases[] = {
     {"clusters_not_union.yaml",
      "bodies[0] (grains).clusters: per_part needs a shape that is a union"},
     {"contact_law_typo.yaml", "contact.law: 'herz' is not allowed"},
+    {"self_contact_too_large.yaml",
+     "bodies[0] (block).self_contact.distance: must be below 1 (a fraction of dp)"},
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
