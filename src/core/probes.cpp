@@ -245,6 +245,21 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       out.push_back(comm.max(e));
     } else if (s.type == "min_distance") {
       out.push_back(comm.min(sim.min_distance()) / sim.dp());
+    } else if (s.type == "diameter") {
+      // 2 x the largest distance of a particle centre from the axis (through `point`, along
+      // `axis`) + dp: the outer diameter of a round body whatever the lattice directions.
+      double r2 = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i)) continue;
+        double d2 = 0, along = 0;
+        for (int a = 0; a < D; ++a) along += (x[i][a] - s.point[a]) * s.axis[a];
+        for (int a = 0; a < D; ++a) {
+          const double c = x[i][a] - s.point[a] - along * s.axis[a];
+          d2 += c * c;
+        }
+        r2 = std::max(r2, d2);
+      }
+      out.push_back(2 * std::sqrt(comm.max(r2)) + sim.dp());
     } else if (s.type == "extent") {  // max - min of a component; + dp for position (outer faces)
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (std::size_t i = 0; i < n; ++i)

@@ -954,7 +954,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         "reaction_force", "surface_force",  "surface_contacts", "removed_mass",
         "field_max",      "field_min",      "extent",           "surface_displacement",
         "fluid_force",    "penetration",    "grain_impacts",    "contact_pairs",
-        "total_energy",   "pieces"};
+        "total_energy",   "pieces",         "diameter"};
     for (std::size_t i = 0; i < list.size(); ++i) {
       std::string p = "probes.list[" + std::to_string(i) + "]";
       MapReader q(list[i], p);
@@ -993,10 +993,19 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         q.optional("target");
       }
-      if (ps.type == "value_at" || ps.type == "tracked")
+      if (ps.type == "value_at" || ps.type == "tracked" || ps.type == "diameter")
         ps.point = q.vector("point", dim);
       else
         q.optional("point");
+      if (ps.type == "diameter") {
+        ps.axis = q.vector("axis", dim);
+        double a2 = 0;
+        for (double c : ps.axis) a2 += c * c;
+        if (!(a2 > 0)) scene_error(p + ".axis", "must not be the zero vector");
+        for (double& c : ps.axis) c /= std::sqrt(a2);
+      } else {
+        q.optional("axis");
+      }
       if (ps.type == "pieces") {
         ps.min_particles = q.integer("min_particles", ps.min_particles);
         if (ps.min_particles < 1) scene_error(q.at("min_particles"), "must be at least 1");

@@ -155,6 +155,7 @@ struct ProbeSpec {
   std::string target;  // penetration: the body penetrated (empty: every solid particle)
   int component = -1;
   Point point;
+  Point axis;              // diameter: direction of the axis through `point`
   int min_particles = 10;  // pieces: smaller clusters (spray, single particles) are not counted
 };
 

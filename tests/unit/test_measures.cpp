@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/probes.hpp"
+#include "core/scene.hpp"
 
 using namespace monosph;
 
@@ -70,4 +71,47 @@ TEST(Measures, PiecesAreTheLinkedClustersOfAPointSet) {
   for (int k = 0; k < 10; ++k) xyz.insert(xyz.end(), {-1e3, 7.0, k + (k >= 5 ? 1.0 : 0.0) - 3});
   EXPECT_EQ(piece_sizes(xyz, 3, 1.5), (std::vector<long>{5, 5}));
   EXPECT_EQ(piece_sizes(xyz, 3, 2.5), (std::vector<long>{10}));
+}
+
+TEST(Measures, DiameterProbeIsTwiceTheLargestDistanceFromTheAxisPlusDp) {
+  // A 3D cylinder of radius 0.05 along z (dp 0.01) through (0.1, 0.1): its lattice reaches
+  // further out along the diagonals than along x. The probe gives 2 max r + dp about the axis,
+  // the same after the body is turned about the axis; the x extent changes.
+  Scene scene = load_scene_text(R"(
+name: cyl
+dimension: 3
+dp: 0.01
+domain: {min: [-0.2, -0.2, -0.2], max: [0.4, 0.4, 0.4]}
+materials:
+  steel: {density: 7800, bulk_modulus: 160e9, shear_modulus: 80e9}
+bodies:
+  - name: bar
+    phase: solid
+    material: steel
+    shape: {cylinder: {start: [0.1, 0.1, 0], end: [0.1, 0.1, 0.1], radius: 0.05}}
+end_time: 1
+probes:
+  list:
+    - {name: d, type: diameter, point: [0.1, 0.1, 0.3], axis: [0, 0, 2]}
+    - {name: wx, type: extent, field: position.x}
+)");
+  Simulation<3> sim(scene);
+  sim.create_particles();
+  sim.init();
+  Probes<3> probes(sim);
+  auto& p = sim.particles();
+  double r2 = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    r2 = std::max(r2, std::pow(p.x()[i][0] - 0.1, 2) + std::pow(p.x()[i][1] - 0.1, 2));
+  const auto v0 = probes.sample(sim);
+  EXPECT_NEAR(v0[0], 2 * std::sqrt(r2) + 0.01, 1e-14);
+  EXPECT_GT(v0[0], v0[1] + 1e-4);  // the diagonal reaches further than the x extent
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double dx = p.x()[i][0] - 0.1, dy = p.x()[i][1] - 0.1;
+    p.x()[i][0] = 0.1 + c * dx - s * dy, p.x()[i][1] = 0.1 + s * dx + c * dy;
+  }
+  const auto v1 = probes.sample(sim);
+  EXPECT_NEAR(v1[0], v0[0], 1e-14);
+  EXPECT_GT(std::abs(v1[1] - v0[1]), 1e-4);
 }
