@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "core/hertz.hpp"
+
 namespace monosph {
 
 namespace {
@@ -43,7 +45,7 @@ double ContactModule<D>::pair_force(double r, int mi, int mj, double m_i, double
   if (r >= dc_) return 0.0;
   if (hertz_) {
     const double delta = dc_ - r, rstar = 0.25 * dc_;  // two spheres of radius d_c/2
-    return 4.0 / 3.0 * estar_[idx(mi, mj)] * std::sqrt(rstar) * delta * std::sqrt(delta) / depth_;
+    return hertz_force(estar_[idx(mi, mj)], rstar, delta) / depth_;
   }
   const double q = dc_ / r, mij = 2 * m_i * m_j / (m_i + m_j);
   return mij * spec_.strength * (std::pow(q, spec_.p1) - std::pow(q, spec_.p2)) / r;
@@ -89,7 +91,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
         double kn;
         if (hertz) {
           const double delta = std::max(dc - r, delta_floor);
-          kn = 2.0 * estar_[idx(mt[i], mt[j])] * std::sqrt(0.25 * dc * delta) / depth_;
+          kn = hertz_stiffness(estar_[idx(mt[i], mt[j])], 0.25 * dc, delta) / depth_;
         } else {
           const double re = std::min(r, 0.9 * dc), q = dc / re;
           const double mij = 2 * m[i] * m[j] / (m[i] + m[j]);

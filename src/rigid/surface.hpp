@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/hertz.hpp"
 #include "core/scene.hpp"
 #include "core/types.hpp"
 
@@ -76,14 +77,6 @@ void write_stl(const std::string& file, const std::vector<std::array<Vec3, 3>>& 
 template <int D>
 std::vector<SurfaceElement<D>> surface_elements(const SurfaceSpec& spec, const std::string& where);
 
-// Hertz contact of a sphere of radius R with a flat (Johnson 1985, Contact Mechanics, Eq. 4.23):
-// F = 4/3 E* sqrt(R) delta^(3/2), and its stiffness dF/d(delta) = 2 E* sqrt(R delta).
-inline double hertz_force(double e_star, double radius, double overlap) {
-  return overlap > 0 ? 4.0 / 3.0 * e_star * std::sqrt(radius) * overlap * std::sqrt(overlap) : 0.0;
-}
-inline double hertz_stiffness(double e_star, double radius, double overlap) {
-  return overlap > 0 ? 2.0 * e_star * std::sqrt(radius * overlap) : 0.0;
-}
 // Contact modulus 1/E* = (1 - nu_p^2)/E_p + (1 - nu_s^2)/E_s of a particle material (K, mu) and a
 // surface of Young's modulus e_s (0: rigid, no term) and Poisson ratio nu_s. E = 9K mu/(3K + mu),
 // nu = (3K - 2mu)/(2(3K + mu)). A fluid (mu = 0) would have E = 0 and no contact at all; it

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/hertz.hpp"
 #include "core/sph_equations.hpp"
 #include "elasticity.hpp"
 #include "plasticity.hpp"
@@ -557,9 +558,9 @@ void SolidModule<D>::self_contact(Simulation<D>& sim) {
       const double r = pl.r[k].norm();
       if (r >= dc || r == 0) continue;
       const double delta = dc - r;
-      f += (4.0 / 3.0 * estar * std::sqrt(rstar) * delta * std::sqrt(delta) / depth / r) * pl.r[k];
+      f += (hertz_force(estar, rstar, delta) / depth / r) * pl.r[k];
       // dF/d(delta), at an overlap of at least 0.1 R (as the grain contact)
-      kn += 2.0 * estar * std::sqrt(rstar * std::max(delta, 0.05 * dc)) / depth;
+      kn += hertz_stiffness(estar, rstar, std::max(delta, 0.05 * dc)) / depth;
     }
     a[i] += f / m[i];
     contact_w2_[i] = kn / m[i];

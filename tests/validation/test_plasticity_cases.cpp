@@ -42,8 +42,8 @@ TEST(Upsetting, ForceFollowsTheJohnsonCookFlowCurve) {
 TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
   // 3D, 6 particles across the diameter (810 particles), 100 us, anvil friction 0.3: the bar
   // comes to rest. Against House et al. 1995 (29.9 mm, 13.5 mm) the length is 9.4 % short (MMB
-  // report about 10 %) and the diameter (probe `diameter`, any direction) 12.1 % small; both
-  // change by less than 1 % up to 29 across (cases/taylor_bar/README.md).
+  // report about 10 %) and the diameter (probe `diameter`, any direction) 11.8 % small; the
+  // diameter is the same to 0.2 % at 10 and 15 across (cases/taylor_bar/README.md).
   const std::string out = out_dir("taylor_3d_coarse");
   auto r = run_monosph("run " + source("cases/taylor_bar/scene.yaml") + " --out " + out +
                        " --quiet --set dp=1.2658333333333333e-3 output.every=1");
@@ -53,7 +53,7 @@ TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
   EXPECT_NEAR(t["length"].back(), 29.9e-3, 0.12 * 29.9e-3);
   EXPECT_NEAR(t["diameter"].back(), 13.5e-3, 0.15 * 13.5e-3);
   EXPECT_NEAR(t["diameter_y"].back(), t["diameter_x"].back(), 0.05 * t["diameter_x"].back());
-  EXPECT_GT(max_of(t["max_plastic_strain"]), 0.8);      // 1.00 at 6 across, 2.16 at 29 across
+  EXPECT_GT(max_of(t["max_plastic_strain"]), 0.6);      // 0.82 at 6 across, 1.16 at 15 across
   EXPECT_GT(max_of(t["max_temperature"]), 292 + 50.0);  // adiabatic heating at the impact face
   EXPECT_GT(min_of(t["min_distance"]), 0.1);
 }
