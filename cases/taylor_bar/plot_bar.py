@@ -48,7 +48,7 @@ s = x[:, 2] < x[:, 2].min() + 3 * dp
 order = np.argsort(-x[s, 2])  # lowest particles drawn last (on top, seen from below)
 ax = axes[3]
 ax.scatter(1e3 * x[s, 0][order], 1e3 * x[s, 1][order], c=ep[s][order], s=4, cmap="jet", vmin=0, vmax=2)
-ax.set_title(f"t = {tf * 1e6:.0f} us, impact face (z < 3 dp), from below")
+ax.set_title(f"impact face (z < 3 dp) from below, {tf * 1e6:.0f} us", fontsize=10)
 ax.set_aspect("equal"), ax.set_xlabel("x (mm)"), ax.set_ylabel("y (mm)")
 fig.colorbar(sc, ax=axes, label="plastic strain", shrink=0.8)
 fig.suptitle(title)
