@@ -52,8 +52,10 @@ def main():
     labels = ["with hourglass control", "without hourglass control"]
     fig = plt.figure(figsize=(14, 7.5))
     gs = fig.add_gridspec(2, 2, width_ratios=[2.2, 1])
-    for k, run in enumerate(runs):
-        d = last_frame(run)
+    frames = [last_frame(run) for run in runs]
+    # One grey scale for both maps, up to the largest disorder of their solids.
+    vmax = max(max(d.get("disorder", np.zeros(1))[d["phase"] == 1].max(), 1e-6) for d in frames)
+    for k, d in enumerate(frames):
         ax = fig.add_subplot(gs[k, 0])
         x, ph = d["x"] * 1e6, d["phase"]
         dis = d.get("disorder", np.zeros(len(x)))
@@ -61,7 +63,7 @@ def main():
         ax.scatter(x[ph == 0, 0], x[ph == 0, 1], s=s, c="#1f3b73", lw=0)
         ax.scatter(x[ph == 3, 0], x[ph == 3, 1], s=s, c="#555555", lw=0)
         sc = ax.scatter(x[ph == 1, 0], x[ph == 1, 1], s=s, c=dis[ph == 1], cmap="Greys",
-                        vmin=-0.025, vmax=0.05, lw=0)
+                        vmin=-vmax / 2, vmax=vmax, lw=0)
         ax.scatter(x[ph == 2, 0], x[ph == 2, 1], s=s, c="#8ecae6", lw=0)
         ax.set_aspect("equal")
         ax.set_xlim(0, 60)

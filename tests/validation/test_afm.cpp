@@ -1,7 +1,7 @@
 // The abrasive-flow-machining scene (cases/abrasive_flow_machining) at dp = 1 um: fluid, PMMA and
-// grains together stay stable, the first grain hits the roughness, nothing penetrates, and a
-// restart from a checkpoint (rigid-cluster state included) reproduces the uninterrupted run
-// bit for bit.
+// grains together stay stable, the first grain hits the roughness, nothing penetrates, the PMMA
+// comes to rest after the impacts, and a restart from a checkpoint (rigid-cluster state
+// included) reproduces the uninterrupted run bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,7 +22,7 @@ const std::string kCoarse =
 TEST(AbrasiveFlow, CoarseRunHitsTheRoughnessWithoutPenetration) {
   const std::string out = out_dir("afm_coarse");
   auto r = run_monosph("run " + source("cases/abrasive_flow_machining/scene.yaml") + " --out " +
-                       out + " --quiet" + kCoarse + " end_time=2e-6 output.every=1");
+                       out + " --quiet" + kCoarse + " output.every=1");
   ASSERT_EQ(r.code, 0) << r.output;
   auto t = read_csv(out + "/probes.csv");
   const double dp = 1e-6;
@@ -32,9 +32,17 @@ TEST(AbrasiveFlow, CoarseRunHitsTheRoughnessWithoutPenetration) {
   EXPECT_LT(max_of(t["disorder"]), 0.05);  // with hourglass control (dp units)
   EXPECT_GT(min_of(t["min_distance"]), 0.3);
   // The drive keeps the flow going: the mean fluid speed starts at the Poiseuille mean 20/3 m/s
-  // and stays within 25 % of it (at dp = 0.5 um it falls to 5.6 m/s by 2 us: the roughness and
-  // the grains slow the smooth-channel profile).
-  for (double u : t["fluid_mean_u"]) EXPECT_NEAR(u, 20.0 / 3.0, 20.0 / 3.0 * 0.25);
+  // and stays within 25 % of it up to 2 us (at dp = 0.5 um it falls to 5.6 m/s by 2 us: the
+  // roughness and the grains slow the smooth-channel profile).
+  for (std::size_t k = 0; k < t["time"].size(); ++k)
+    if (t["time"][k] <= 2e-6) {
+      EXPECT_NEAR(t["fluid_mean_u"][k], 20.0 / 3.0, 20.0 / 3.0 * 0.25);
+    }
+  // Once the impacts are over the PMMA comes to rest: with the corrected stress divergence its
+  // kinetic energy at 3.5 us is 0.8 % of the peak; with MMB's normalised form it grows again
+  // (41 % of a peak reached at the end, 5x the impact peak).
+  const auto& ke = t["pmma_kinetic_energy"];
+  EXPECT_LT(ke.back(), 0.05 * max_of(ke)) << ke.back() << " " << max_of(ke);
 }
 
 TEST(AbrasiveFlow, RestartEqualsUninterruptedRun) {
