@@ -4,29 +4,24 @@
 Plastic strain in the slice |y| < dp at 20, 40 and 100 us and the impact face (z < 3 dp above
 the lowest particle) seen from below at the last frame, from a 3D run of scene.yaml.
 Needs Debian's python3-vtk9, python3-numpy and python3-matplotlib."""
-import glob, json, re, sys
+import json, sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+
+from frames import frames as run_frames, read
 
 out, png = sys.argv[1], sys.argv[2]
 title = sys.argv[3] if len(sys.argv) > 3 else out
 dp = json.load(open(out + "/summary.json"))["dp"]
-frames = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(glob.glob(out + "/*.pvd")[0]).read())
-frames = [(float(t), f) for t, f in frames]
+frames = run_frames(out)
 
 
-def load(name):
-    r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(out + "/" + name)
-    r.Update()
-    g = r.GetOutput()
-    return vtk_to_numpy(g.GetPoints().GetData()), vtk_to_numpy(g.GetPointData().GetArray("plastic_strain"))
+def load(path):
+    return read(path, "plastic_strain")
 
 
 def nearest(t):

@@ -3,25 +3,21 @@
 
 Plastic strain of the last frame of each run of scene_2d.yaml, side by side.
 Needs Debian's python3-vtk9, python3-numpy and python3-matplotlib."""
-import glob, sys
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+
+from frames import frames, read
 
 png, runs = sys.argv[1], [a.split("=", 1) for a in sys.argv[2:]]
 fig, axes = plt.subplots(1, len(runs), figsize=(6.5 * len(runs), 5.5), squeeze=False)
 for ax, (label, out) in zip(axes[0], runs):
-    r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(sorted(glob.glob(out + "/*_[0-9]*.vtu"))[-1])
-    r.Update()
-    g = r.GetOutput()
-    x = vtk_to_numpy(g.GetPoints().GetData()) * 1e3
-    ep = vtk_to_numpy(g.GetPointData().GetArray("plastic_strain"))
-    t = g.GetFieldData().GetArray("TimeValue").GetValue(0)
+    t, path = frames(out)[-1]
+    x, ep = read(path, "plastic_strain")
+    x = x * 1e3
     sc = ax.scatter(x[:, 0], x[:, 1], c=ep, s=6, cmap="jet", vmin=0, vmax=2)
     ax.set_aspect("equal")
     ax.set_xlim(-14, 14)

@@ -5,22 +5,17 @@ Reads the last frame of each run (3D) and prints, for heights h above the anvil 
 diameter of the particles whose centres lie within dp/2 of h: 2 (max radius + dp/2). Height 0 is
 the footprint (the `diameter_x` probe measures the same along x only). Needs Debian's
 python3-vtk9 and python3-numpy."""
-import glob, json, re, sys
+import json, sys
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+
+from frames import frames, read
 
 heights = [0.0, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0]  # mm above the anvil face
 print("dp [mm] | " + " | ".join(f"{h:g} mm" for h in heights))
 for out in sys.argv[1:]:
     dp = json.load(open(out + "/summary.json"))["dp"]
-    pvd = open(glob.glob(out + "/*.pvd")[0]).read()
-    last = re.findall(r'file="([^"]+)"', pvd)[-1]
-    r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(out + "/" + last)
-    r.Update()
-    x = vtk_to_numpy(r.GetOutput().GetPoints().GetData())
+    (x,) = read(frames(out)[-1][1])
     rad = np.hypot(x[:, 0], x[:, 1])
     z = x[:, 2] - x[:, 2].min() + 0.5 * dp  # height of the centres above the anvil face
     row = []
