@@ -62,7 +62,7 @@ TEST(TaylorBar, PlaneStrainImpactRunsToRest) {
   // 2D plane strain, 10 particles across, 80 us (about a second), anvil friction 0.3 with
   // self-contact and the plastic switch: the slab stops on the wall as one piece. Bounds around
   // the 20-across run (length 28.43 mm, width 18.70 mm; 30 across: 28.36 / 18.73 mm); measured
-  // 28.58 mm (+0.5 %) and 16.16 mm (-13.6 %). On a frictionless anvil the slab spreads to 26 mm.
+  // 28.58 mm (+0.5 %) and 16.16 mm (-13.6 %). On a frictionless anvil it spreads to 24.3 mm here.
   const std::string out = out_dir("taylor_2d");
   auto r = run_monosph("run " + source("cases/taylor_bar/scene_2d.yaml") + " --out " + out +
                        " --quiet --set dp=7.595e-4 output.every=1");
