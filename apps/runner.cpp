@@ -6,12 +6,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "assemble.hpp"
 #include "core/checkpoint.hpp"
+#include "core/memory.hpp"
 #include "core/output_vtk.hpp"
 #include "core/probes.hpp"
 #include "core/scene.hpp"
@@ -24,6 +26,33 @@ namespace monosph {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// SIGINT / SIGTERM: the run finishes its step, writes its last frame and summary (status
+// "interrupted") and exits with 128 + the signal. SA_RESETHAND: a second signal stops at once.
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+}
+class SignalGuard {
+ public:
+  SignalGuard() {
+    g_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_signal;
+    sa.sa_flags = SA_RESETHAND;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~SignalGuard() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+
+ private:
+  struct sigaction old_int_ {
+  }, old_term_{};
+};
 
 std::string hms(double s) {
   if (!std::isfinite(s) || s < 0) return "--:--:--";
@@ -194,18 +223,25 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     meta.scalars["next_output"] = next_output;
     meta.scalars["next_probe"] = next_probe;
     meta.scalars["next_checkpoint"] = next_ckpt;
+    meta.scalars["reference_end_time"] = scene.reference_end_time;
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
     write_checkpoint<D>(file, p, sim.owned(), meta, comm);
   };
 
+  long frame_step = -1;  // step of the last frame written
+  auto frame = [&] {
+    sim.diagnostics();
+    frame_step = sim.step();
+    return vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
+  };
   const double eps = 1e-12 * scene.end_time;
   if (!restart_meta) {
-    if (opt.write_output)
-      sim.diagnostics(), vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
+    if (opt.write_output) frame();
     next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
     next_probe = scene.probe_every;
   }
+  SignalGuard signals;
   Progress progress(opt.quiet || !root, sim.time(), scene.end_time);
   progress.start_steps(sim.step());
   std::string status = "completed";
@@ -223,8 +259,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
         if (next_probe <= sim.time()) next_probe = sim.time();
       }
       if (opt.write_output && sim.time() >= next_output - eps) {
-        sim.diagnostics();
-        vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
+        frame();
         next_output += scene.output_every > 0 ? scene.output_every : scene.end_time;
       }
       if (opt.write_output && scene.checkpoint_every > 0 && sim.time() >= next_ckpt - eps) {
@@ -233,6 +268,12 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       }
       progress.update(sim.time(), sim.step());
       if (opt.max_steps > 0 && sim.step() - step0 >= opt.max_steps) break;
+      if (const long sig = comm.max(static_cast<long>(g_signal)); sig != 0) {
+        status = "interrupted";
+        res.exit_code = 128 + static_cast<int>(sig);
+        if (root) fmt::print(stderr, "\nmonosph: run interrupted by {}\n", strsignal(int(sig)));
+        break;
+      }
     }
   } catch (const RunAborted& e) {
     status = e.what();
@@ -240,14 +281,15 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     if (root) fmt::print(stderr, "\nmonosph: run stopped: {}\n", e.what());
     if (opt.write_output) {
       try {
-        sim.diagnostics();
-        auto f = vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
+        auto f = frame();
         if (root) fmt::print(stderr, "monosph: last state written to {}\n", f.string());
       } catch (const std::exception& w) {
         fmt::print(stderr, "monosph: could not write the last state: {}\n", w.what());
       }
     }
   }
+  // However the run ended (end time, --steps, an interrupt), its last state is the last frame.
+  if (opt.write_output && frame_step != sim.step()) frame();
   progress.update(sim.time(), sim.step(), true);
   progress.finish();
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -281,6 +323,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     mpi["imbalance_last"] = st.imbalance;  // largest / mean work at the last rebuild
     mpi["migrated"] = comm.sum(st.migrated);
   }
+  // Largest resident set of any rank (collective).
+  const long peak_memory = comm.max(static_cast<long>(peak_resident_bytes()));
   if (!root) return res;
 
   nlohmann::json js;
@@ -307,6 +351,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["neighbour_seconds"] = res.neighbour_seconds;
   js["pass_seconds"] = sim.pass_seconds();  // this rank's (rank 0 under MPI)
   js["last_dt"] = sim.dt();
+  js["peak_memory_bytes"] = peak_memory;
   js["output"] = (out / (scene.name + ".pvd")).string();
   js["metrics"] = nlohmann::json::object();
   {
@@ -328,10 +373,16 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     for (const auto& ref : scene.references) {
       const auto* y = column(ref.probe);
       const double value = y ? measure_series(ref.measure, cols[0], *y, ref.start) : NAN;
+      // A measure over a window (final, max, min, mean) is the reference's only once the run has
+      // simulated the time the scene gives it; before that it is "not reached", not an error.
+      const double needs = ref.needs_time(scene.reference_end_time);
+      const bool reached = sim.time() >= needs * (1 - 1e-9);
       nlohmann::json m;
       m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
       m["reference"] = ref.value;
-      m["relative_error"] = std::isfinite(value) && ref.value != 0
+      m["reached"] = reached;
+      m["needs_time"] = needs;
+      m["relative_error"] = reached && std::isfinite(value) && ref.value != 0
                                 ? nlohmann::json(std::abs(value - ref.value) / std::abs(ref.value))
                                 : nlohmann::json(nullptr);
       js["metrics"][ref.name] = m;
@@ -358,16 +409,24 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     }
   }
   std::ofstream(out / "summary.json") << js.dump(2) << "\n";
+  const std::string done = fmt::format(
+      "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} threads",
+      status == "completed" || status == "interrupted" ? status : "stopped", res.particles,
+      res.steps, wall, res.particle_steps_per_second,
+      comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "", omp_get_max_threads());
+  if (opt.quiet)  // the one line a script's log keeps: status and where the summary is
+    fmt::print(stderr, "{}; summary {}\n", done, (out / "summary.json").string());
   if (!opt.quiet) {
-    fmt::print(stderr,
-               "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} "
-               "threads\n",
-               status == "completed" ? "completed" : "stopped", res.particles, res.steps, wall,
-               res.particle_steps_per_second,
-               comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "",
-               omp_get_max_threads());
+    fmt::print(stderr, "{}\n", done);
     for (const auto& ref : scene.references) {
       const nlohmann::json& m = js["metrics"][ref.name];
+      if (!m["reached"].get<bool>()) {
+        fmt::print(stderr,
+                   "monosph: {} not reached: its measure needs {:.6g} s simulated, the run "
+                   "reached {:.6g} s\n",
+                   ref.name, m["needs_time"].get<double>(), sim.time());
+        continue;
+      }
       if (m["value"].is_null()) {
         fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name,
                    ref.probe);
@@ -410,6 +469,9 @@ RunResult run_scene(const RunOptions& opt) {
       meta = read_checkpoint<3>(opt.restart, probe);
     }
     scene = load_scene_text(meta.scene_yaml, opt.overrides, opt.restart);
+    // The end time of the scene as first written (the checkpoint's text has its --set values).
+    if (auto it = meta.scalars.find("reference_end_time"); it != meta.scalars.end())
+      scene.reference_end_time = it->second;
   } else {
     scene = load_scene_file(opt.scene, opt.overrides);
   }

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <system_error>
@@ -89,15 +90,17 @@ std::string xml_unescape(std::string s) {
 }
 
 // Output layout of a field with nc components: out component j takes input component map[j]
-// (-1 = zero). D-vectors pad to 3; DxD and 3x3 column-major tensors become 3x3 row-major.
+// (kZero = 0, kPad = the field's pad_zz). D-vectors pad to 3; DxD and 3x3 column-major tensors
+// become 3x3 row-major.
+constexpr int kZero = -1, kPad = -2;
 template <int D>
 std::vector<int> layout(int nc) {
   std::vector<int> m;
   if (nc == D) {
-    for (int j = 0; j < 3; ++j) m.push_back(j < D ? j : -1);
+    for (int j = 0; j < 3; ++j) m.push_back(j < D ? j : kZero);
   } else if (nc == D * D) {
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) m.push_back(r < D && c < D ? c * D + r : -1);
+      for (int c = 0; c < 3; ++c) m.push_back(r < D && c < D ? c * D + r : r == c ? kPad : kZero);
   } else if (nc == 9) {
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) m.push_back(c * 3 + r);
@@ -107,30 +110,51 @@ std::vector<int> layout(int nc) {
   return m;
 }
 
-template <class Arr, class T>
-void fill(Arr* a, const std::vector<T>& src, int nc, std::size_t n, const std::vector<int>& map) {
+// ParaView's names for the components of a written array (3: X Y Z; 9: XX XY ... ZZ).
+std::vector<std::string> component_names(std::size_t n) {
+  if (n == 3) return {"X", "Y", "Z"};
+  if (n == 9) return {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+  return {};
+}
+
+// Copies src into a by `map`; a particle for which `meaningful` is false gets NaN (real arrays).
+template <class Arr, class T, class Pred>
+void fill(Arr* a, const std::vector<T>& src, int nc, std::size_t n, const std::vector<int>& map,
+          double pad, Pred meaningful) {
   const int no = static_cast<int>(map.size());
   a->SetNumberOfComponents(no);
   a->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  const auto names = component_names(map.size());
+  for (std::size_t j = 0; j < names.size(); ++j)
+    a->SetComponentName(static_cast<vtkIdType>(j), names[j].c_str());
   using Out = typename Arr::ValueType;  // long long for vtkTypeInt64Array
   Out* dst = a->GetPointer(0);
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!meaningful(i)) {
+      for (int j = 0; j < no; ++j) dst[i * no + j] = std::numeric_limits<Out>::quiet_NaN();
+      continue;
+    }
     for (int j = 0; j < no; ++j)
-      dst[i * no + j] = map[j] < 0 ? Out(0) : static_cast<Out>(src[i * nc + map[j]]);
+      dst[i * no + j] = map[j] == kZero  ? Out(0)
+                        : map[j] == kPad ? static_cast<Out>(pad)
+                                         : static_cast<Out>(src[i * nc + map[j]]);
+  }
 }
 
 template <int D>
-void add_array(vtkPointData* pd, const Field& f, std::size_t n) {
+void add_array(vtkPointData* pd, const Field& f, std::span<const std::int64_t> phase,
+               std::size_t n) {
   auto map = layout<D>(f.ncomp);
   if (f.type == FieldType::Real) {
     vtkNew<vtkDoubleArray> a;
     a->SetName(f.name.c_str());
-    fill(a.GetPointer(), f.real, f.ncomp, n, map);
+    fill(a.GetPointer(), f.real, f.ncomp, n, map, f.pad_zz,
+         [&](std::size_t i) { return (f.phases >> phase[i]) & 1u; });
     pd->AddArray(a);
-  } else {
+  } else {  // integer fields have no "no value"; they are written as they are
     vtkNew<vtkTypeInt64Array> a;
     a->SetName(f.name.c_str());
-    fill(a.GetPointer(), f.ints, f.ncomp, n, map);
+    fill(a.GetPointer(), f.ints, f.ncomp, n, map, f.pad_zz, [](std::size_t) { return true; });
     pd->AddArray(a);
   }
 }
@@ -182,7 +206,8 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, std::size_t owned, double ti
   pts->SetDataTypeToDouble();
   {
     vtkNew<vtkDoubleArray> xyz;
-    fill(xyz.GetPointer(), p.field("position").real, D, n, layout<D>(D));
+    fill(xyz.GetPointer(), p.field("position").real, D, n, layout<D>(D), 0.0,
+         [](std::size_t) { return true; });
     pts->SetData(xyz);
   }
   grid->SetPoints(pts);
@@ -193,7 +218,8 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, std::size_t owned, double ti
   cells->SetData(1, conn);
   grid->SetCells(VTK_VERTEX, cells);
 
-  for (int k : ks) add_array<D>(grid->GetPointData(), p.field(k), n);
+  const auto& ph = p.field("phase").ints;
+  for (int k : ks) add_array<D>(grid->GetPointData(), p.field(k), ph, n);
   // ParaView picks up "TimeValue" field data as the frame time.
   vtkNew<vtkDoubleArray> tv;
   tv->SetName("TimeValue");
@@ -213,8 +239,10 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, std::size_t owned, double ti
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   w->SetFileName(path.c_str());
   w->SetInputData(grid);
-  w->SetDataModeToAppended();
-  w->EncodeAppendedDataOff();
+  // Inline base64 binary: the file is well-formed XML. Raw appended data is not, and the
+  // ParaView 5.11 of Debian 12 (expat 2.5.0-1+deb12u5, reparse deferral) reads such frames
+  // with 0 points.
+  w->SetDataModeToBinary();
   w->SetCompressorTypeToZLib();
   w->SetHeaderTypeToUInt64();
   if (!w->Write() || w->GetErrorCode() != vtkErrorCode::NoError)
@@ -231,7 +259,11 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, std::size_t owned, double ti
       const Field& f = p.field(k);
       x << "      <PDataArray type=\"" << (f.type == FieldType::Real ? "Float64" : "Int64")
         << "\" Name=\"" << xml_escape(f.name) << "\" NumberOfComponents=\""
-        << layout<D>(f.ncomp).size() << "\"/>\n";
+        << layout<D>(f.ncomp).size() << "\"";
+      const auto names = component_names(layout<D>(f.ncomp).size());
+      for (std::size_t j = 0; j < names.size(); ++j)
+        x << " ComponentName" << j << "=\"" << names[j] << "\"";
+      x << "/>\n";
     }
     x << "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"Float64\" "
          "NumberOfComponents=\"3\"/>\n    </PPoints>\n";

@@ -18,6 +18,12 @@ struct Field {
   std::vector<double> real;
   std::vector<std::int64_t> ints;
   bool output = false;  // written to VTK frames
+  // Phases (bit 1 << phase) where the field has a meaning; a frame shows NaN ("no value") for
+  // the other particles, so e.g. a wall does not show a temperature. Set by the owning module.
+  unsigned phases = ~0u;
+  // 2D DxD tensors are written as 3x3; the zz entry is this (1 for a deformation gradient, so
+  // that ParaView's determinant and eigenvalues are right), the other new entries 0.
+  double pad_zz = 0;
   std::size_t size() const { return type == FieldType::Real ? real.size() : ints.size(); }
 };
 

@@ -388,7 +388,11 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   if (m.neo_hookean && m.shear_modulus <= 0)
     scene_error(r.at("elasticity"), "neo_hookean needs a positive shear_modulus");
   if (m.taylor_quinney > 1) scene_error(r.at("taylor_quinney"), "must lie in [0, 1]");
-  if (r.has("plasticity")) {
+  if (r.has("plasticity") && r.node("plasticity").IsScalar()) {  // `plasticity: none`: elastic
+    if (r.node("plasticity").Scalar() != "none")
+      scene_error(r.at("plasticity"), "expected a map {A, B, n, ...} or 'none'");
+    m.plasticity.on = false;
+  } else if (r.has("plasticity")) {
     // MMB Eq. 23 (Johnson & Cook 1983); perfect plasticity is B = 0.
     MapReader q(r.node("plasticity"), r.at("plasticity"));
     q.choice("type", {"johnson_cook"}, "johnson_cook");
@@ -431,7 +435,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   }
   if (m.damage.on && !m.plasticity.on)
     scene_error(r.at("damage"),
-                "Johnson-Cook damage grows with plastic strain: give `plasticity` too");
+                "Johnson-Cook damage grows with plastic strain: give `plasticity` too, or "
+                "`damage: none`");
   if (m.plasticity.on && m.neo_hookean)
     scene_error(r.at("elasticity"), "neo_hookean is elastic: remove `plasticity` or the key");
   if (m.plasticity.on && m.shear_modulus <= 0)
@@ -446,6 +451,14 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
                       const std::string& origin) {
   YAML::Node root = parse_yaml(text, origin);
   if (!root.IsMap()) throw InputError(origin + ": a scene must be a YAML map of keys");
+  // The written end time, which the references are posed at (checked below as end_time).
+  double written_end = -1;
+  if (const YAML::Node e = static_cast<const YAML::Node&>(root)["end_time"]; e && e.IsScalar()) {
+    try {
+      written_end = e.as<double>();
+    } catch (const YAML::Exception&) {  // malformed: reported below, unless --set replaces it
+    }
+  }
   for (const auto& o : overrides) apply_override(root, o);
   Scene s;
   {
@@ -892,6 +905,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   s.body_force = r.has("body_force") ? r.vector("body_force", dim)
                                      : (r.optional("body_force"), Point(dim, 0.0));
   s.end_time = r.positive("end_time");
+  s.reference_end_time = written_end > 0 ? written_end : s.end_time;
 
   if (r.has("time_step")) {
     MapReader t(r.node("time_step"), "time_step");
@@ -1054,6 +1068,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max",
                                         "min", "mean", "peak_ratio"});
       rs.start = q.non_negative("start", 0.0);
+      if (q.has("needs_time")) rs.needs = q.non_negative("needs_time", 0.0);
       if (!names_probe_column(s.probes, rs.probe))
         scene_error(p + ".probe", "no probe named '" + rs.probe + "'");
       q.finish();

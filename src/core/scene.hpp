@@ -163,6 +163,16 @@ struct ReferenceSpec {
   std::string name, probe, measure;  // measure: frequency | period | final | max | min | mean
   double value = 0;
   double start = 0;  // ignore probe samples before this time
+  // Simulated time the measure needs (key needs_time). Default: a window measure (final, max,
+  // min, mean) needs the scene's end time as written; a frequency, period or peak ratio only
+  // needs `start` (it is measurable, or not, from the samples after it).
+  double needs = -1;
+  double needs_time(double scene_end_time) const {
+    if (needs >= 0) return needs;
+    const bool window =
+        measure == "final" || measure == "max" || measure == "min" || measure == "mean";
+    return window ? scene_end_time : start;
+  }
 };
 
 // A pass criterion the run checks itself (summary.json "checks"; exit code 5 if one fails).
@@ -190,6 +200,7 @@ struct Scene {
   std::vector<std::string> modules;
   Point body_force;
   double end_time = 0;
+  double reference_end_time = 0;  // end_time as the scene file gives it, before --set overrides
   double cfl = 0.3, force_factor = 0.25, max_dt = 0, dt_collapse = 1e-4;
   // Explicit Newmark (beta = 0): v_{n+1} = v_n + dt((1 - gamma) a_n + gamma a_{n+1}). 0.5 is
   // velocity Verlet (no numerical dissipation); gamma > 0.5 damps modes near the step frequency.

@@ -16,6 +16,10 @@ using Vec3 = Eigen::Matrix<double, 3, 1, Eigen::DontAlign>;
 
 // Phase of a particle: which kind of matter it is.
 enum Phase : std::int64_t { kFluid = 0, kSolid = 1, kRigid = 2, kWall = 3 };
+// A set of phases as a bit mask (Field::phases).
+constexpr unsigned phase_bit(Phase p) {
+  return 1u << static_cast<unsigned>(p);
+}
 
 // An error in user input (scene, command line): reported in one line, exit code 2.
 struct InputError : std::runtime_error {

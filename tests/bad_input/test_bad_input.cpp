@@ -38,6 +38,10 @@ const Case kCases[] = {
     {"contact_law_typo.yaml", "contact.law: 'herz' is not allowed"},
     {"self_contact_too_large.yaml",
      "bodies[0] (block).self_contact.distance: must be below 1 (a fraction of dp)"},
+    {"plasticity_bad_word.yaml",
+     "materials.al.plasticity: expected a map {A, B, n, ...} or 'none'"},
+    {"plasticity_none_keeps_damage.yaml",
+     "damage grows with plastic strain: give `plasticity` too, or `damage: none`"},
 };
 
 void PrintTo(const Case& c, std::ostream* os) {

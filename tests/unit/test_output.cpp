@@ -1,4 +1,5 @@
 // VtkSeries: frames read back with VTK's own reader; the .pvd lists every frame.
+#include <expat.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <vtkDataArray.h>
@@ -8,6 +9,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -250,6 +252,127 @@ TEST(VtkSeries, SameStepReplacesLastEntry) {
   out.write(p, 0.5, 5);
   EXPECT_EQ(out.frames(), 2);
   EXPECT_EQ(read_pvd(out.pvd_path()).size(), 2u);
+}
+
+// Parses the whole file as XML with expat. Debian 12's ParaView 5.11 (expat 2.5.0-1+deb12u5,
+// reparse deferral) reads a frame only if the file is well-formed XML: raw appended binary data
+// is not, and such frames read back with 0 points there.
+std::string xml_error(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  XML_Parser parser = XML_ParserCreate(nullptr);
+  std::string err;
+  if (XML_Parse(parser, text.data(), static_cast<int>(text.size()), 1) == XML_STATUS_ERROR)
+    err = std::string(XML_ErrorString(XML_GetErrorCode(parser))) + " at line " +
+          std::to_string(XML_GetCurrentLineNumber(parser));
+  XML_ParserFree(parser);
+  return err;
+}
+
+template <int D>
+void frames_are_well_formed() {
+  TmpDir tmp("xml" + std::to_string(D));
+  Particles<D> p;
+  make_particles(p, 50);
+  VtkSeries<D> serial(tmp.path / "serial", "run");
+  const fs::path f = serial.write(p, 0.5, 3);
+  EXPECT_EQ(xml_error(f), "") << f;
+  EXPECT_EQ(xml_error(serial.pvd_path()), "");
+  // MPI pieces and the parallel file that lists them.
+  VtkSeries<D> mpi(tmp.path / "mpi", "run");
+  mpi.set_piece(0, 2);
+  const fs::path pf = mpi.write(p, 20, 0.5, 3);
+  EXPECT_EQ(pf.extension(), ".pvtu");
+  EXPECT_EQ(xml_error(pf), "");
+  EXPECT_EQ(xml_error(tmp.path / "mpi" / "run_000003_p0.vtu"), "");
+  // Still compressed: 50 particles of random tensors.
+  std::ifstream in(f);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  EXPECT_EQ(text.str().find("AppendedData"), std::string::npos);
+}
+
+TEST(VtkSeries, FramesAreWellFormedXml2D) {
+  frames_are_well_formed<2>();
+}
+TEST(VtkSeries, FramesAreWellFormedXml3D) {
+  frames_are_well_formed<3>();
+}
+
+// ParaView's determinant and eigenvalues of a 2D deformation gradient need F_zz = 1; vectors and
+// tensors carry component names (also in the .pvtu of an MPI run).
+TEST(VtkSeries, TensorComponentsNamedAndPadded2D) {
+  TmpDir tmp("tensor");
+  Particles<2> p;
+  p.append(3);
+  const int kF = p.add_field("deformation_gradient", 4, FieldType::Real, true);
+  p.field(kF).pad_zz = 1;
+  for (std::size_t i = 0; i < 3; ++i) {
+    Mat<2> F;
+    F << 1.0 + 0.1 * i, 0.2, -0.05, 0.9;
+    p.view<Mat<2>>(kF)[i] = F;
+  }
+  VtkSeries<2> out(tmp.path, "t");
+  auto g = read_vtu(out.write(p, 0.0, 0));
+  ASSERT_TRUE(g);
+  auto* a = g->GetPointData()->GetArray("deformation_gradient");
+  ASSERT_TRUE(a);
+  ASSERT_EQ(a->GetNumberOfComponents(), 9);
+  const char* names[] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+  for (int j = 0; j < 9; ++j) {
+    ASSERT_TRUE(a->GetComponentName(j)) << j;
+    EXPECT_STREQ(a->GetComponentName(j), names[j]);
+  }
+  auto* v = g->GetPointData()->GetArray("velocity");
+  ASSERT_TRUE(v->GetComponentName(2));
+  EXPECT_STREQ(v->GetComponentName(2), "Z");
+  for (std::size_t i = 0; i < 3; ++i) {
+    Mat3 F3;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) F3(r, c) = a->GetComponent(i, 3 * r + c);
+    EXPECT_EQ(F3(2, 2), 1.0);
+    EXPECT_EQ(F3(0, 1), 0.2);  // row-major: F_xy
+    EXPECT_NEAR(F3.determinant(), p.view<Mat<2>>(kF)[i].determinant(), 1e-15);
+  }
+  VtkSeries<2> mpi(tmp.path / "mpi", "t");
+  mpi.set_piece(0, 2);
+  std::ifstream in(mpi.write(p, 3, 0.0, 0));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("Name=\"deformation_gradient\" NumberOfComponents=\"9\" "
+                            "ComponentName0=\"XX\""),
+            std::string::npos)
+      << text.str();
+}
+
+// A field that has no meaning for a phase (a wall's temperature) is NaN there: ParaView shows
+// it as "no value" and keeps it out of the colour range.
+TEST(VtkSeries, FieldOfOnePhaseIsNaNElsewhere) {
+  TmpDir tmp("phase");
+  Particles<2> p;
+  p.append(4);
+  const int kT = p.add_field("temperature", 1, FieldType::Real, true);
+  p.field(kT).phases = phase_bit(kSolid);
+  for (std::size_t i = 0; i < 4; ++i) {
+    p.phase()[i] = i < 2 ? kSolid : kWall;
+    p.view<double>(kT)[i] = 293.0 + i;
+  }
+  VtkSeries<2> out(tmp.path, "p");
+  auto g = read_vtu(out.write(p, 0.0, 0));
+  ASSERT_TRUE(g);
+  auto* t = g->GetPointData()->GetArray("temperature");
+  EXPECT_EQ(t->GetComponent(0, 0), 293.0);
+  EXPECT_EQ(t->GetComponent(1, 0), 294.0);
+  EXPECT_TRUE(std::isnan(t->GetComponent(2, 0)));
+  EXPECT_TRUE(std::isnan(t->GetComponent(3, 0)));
+  double range[2];
+  t->GetRange(range, 0);  // what ParaView colours by
+  EXPECT_EQ(range[0], 293.0);
+  EXPECT_EQ(range[1], 294.0);
+  EXPECT_EQ(g->GetPointData()->GetArray("density")->GetComponent(3, 0), 0.0);  // every phase
 }
 
 }  // namespace
