@@ -1,6 +1,6 @@
-"""Open a monosph .pvd in ParaView (pvpython) and report what ParaView reads back.
+"""Open a monosph .pvd in ParaView (pvbatch or pvpython) and report what ParaView reads back.
 
-    pvpython scripts/paraview_check.py OUT.pvd [--png FILE]
+    pvbatch scripts/paraview_check.py OUT.pvd [--png FILE]
 
 Goes to the last time step and prints the number of points, the time steps and, for every
 point-data array, its components and ranges. Exits 1 with a one-line message if the last frame
@@ -90,6 +90,11 @@ def main():
             ColorBy(disp, ("POINTS", first_scalar))
             disp.RescaleTransferFunctionToDataRange(True, False)
             disp.SetScalarBarVisibility(view, True)
+        bounds = src.GetDataInformation().GetBounds()
+        if bounds[5] > bounds[4]:  # 3D: an oblique view instead of looking down z
+            view.CameraPosition = [1.0, -2.0, 1.2]
+            view.CameraFocalPoint = [0.0, 0.0, 0.0]
+            view.CameraViewUp = [0.0, 0.0, 1.0]
         ResetCamera(view)
         SaveScreenshot(args.png, view, ImageResolution=[1000, 700])
         print(f"png:         {args.png}  (coloured by {first_scalar or 'solid colour'})")
