@@ -15,11 +15,14 @@
 #include <regex>
 #include <sstream>
 
+#include "../output_files.hpp"
 #include "core/output_vtk.hpp"
 
 namespace monosph {
 namespace {
 namespace fs = std::filesystem;
+using test::file_text;
+using test::read_pvd;
 
 // A fresh directory per test, removed afterwards.
 struct TmpDir {
@@ -37,23 +40,6 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& file) {
   r->Update();
   auto* g = vtkUnstructuredGrid::SafeDownCast(r->GetOutput());
   return g;
-}
-
-struct PvdEntry {
-  double time;
-  std::string file;
-};
-std::vector<PvdEntry> read_pvd(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  const std::string text = s.str();
-  std::vector<PvdEntry> out;
-  std::regex re(R"re(<DataSet[^>]*timestep="([^"]*)"[^>]*file="([^"]*)")re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator();
-       ++it)
-    out.push_back({std::stod((*it)[1].str()), (*it)[2].str()});
-  return out;
 }
 
 // Fills p with n particles and a few extra fields of every shape.
@@ -258,10 +244,7 @@ TEST(VtkSeries, SameStepReplacesLastEntry) {
 // reparse deferral) reads a frame only if the file is well-formed XML: raw appended binary data
 // is not, and such frames read back with 0 points there.
 std::string xml_error(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  const std::string text = s.str();
+  const std::string text = file_text(file);
   XML_Parser parser = XML_ParserCreate(nullptr);
   std::string err;
   if (XML_Parse(parser, text.data(), static_cast<int>(text.size()), 1) == XML_STATUS_ERROR)
@@ -288,11 +271,9 @@ void frames_are_well_formed() {
   EXPECT_EQ(xml_error(pf), "");
   EXPECT_EQ(xml_error(tmp.path / "mpi" / "run_000003_p0.vtu"), "");
   // Still compressed: 50 particles of random tensors.
-  std::ifstream in(f);
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_NE(text.str().find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
-  EXPECT_EQ(text.str().find("AppendedData"), std::string::npos);
+  const std::string text = file_text(f);
+  EXPECT_NE(text.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  EXPECT_EQ(text.find("AppendedData"), std::string::npos);
 }
 
 TEST(VtkSeries, FramesAreWellFormedXml2D) {
@@ -339,13 +320,11 @@ TEST(VtkSeries, TensorComponentsNamedAndPadded2D) {
   }
   VtkSeries<2> mpi(tmp.path / "mpi", "t");
   mpi.set_piece(0, 2);
-  std::ifstream in(mpi.write(p, 3, 0.0, 0));
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_NE(text.str().find("Name=\"deformation_gradient\" NumberOfComponents=\"9\" "
-                            "ComponentName0=\"XX\""),
+  const std::string text = file_text(mpi.write(p, 3, 0.0, 0));
+  EXPECT_NE(text.find("Name=\"deformation_gradient\" NumberOfComponents=\"9\" "
+                      "ComponentName0=\"XX\""),
             std::string::npos)
-      << text.str();
+      << text;
 }
 
 // A field that has no meaning for a phase (a wall's temperature) is NaN there: ParaView shows

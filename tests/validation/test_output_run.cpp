@@ -10,29 +10,13 @@
 #include <regex>
 #include <thread>
 
+#include "../output_files.hpp"
 #include "run_helpers.hpp"
 
 using namespace monosph::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Frame {
-  double time;
-  std::string file;
-};
-std::vector<Frame> pvd_frames(const std::string& pvd) {
-  std::ifstream in(pvd);
-  std::stringstream s;
-  s << in.rdbuf();
-  const std::string text = s.str();
-  std::vector<Frame> out;
-  std::regex re(R"re(<DataSet[^>]*timestep="([^"]*)"[^>]*file="([^"]*)")re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator();
-       ++it)
-    out.push_back({std::stod((*it)[1].str()), (*it)[2].str()});
-  return out;
-}
 
 // The "Step" field data of a frame.
 long frame_step(const std::string& vtu) {
@@ -46,7 +30,7 @@ long frame_step(const std::string& vtu) {
 // The .pvd ends where summary.json's simulated_time ends, with the frame of the last step.
 void expect_last_frame_is_last_state(const std::string& out, const std::string& name) {
   const auto js = summary(out);
-  const auto frames = pvd_frames(out + "/" + name + ".pvd");
+  const auto frames = read_pvd(out + "/" + name + ".pvd");
   ASSERT_FALSE(frames.empty());
   EXPECT_EQ(frames.back().time, js["simulated_time"].get<double>());
   EXPECT_EQ(frame_step(out + "/" + frames.back().file), js["steps"].get<long>());
@@ -61,7 +45,7 @@ TEST(RunOutput, StepsLimitedRunEndsWithItsLastFrame) {
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(summary(out)["steps"].get<long>(), 7);
   expect_last_frame_is_last_state(out, "acoustic_wave");
-  EXPECT_EQ(pvd_frames(out + "/acoustic_wave.pvd").size(), 2u);
+  EXPECT_EQ(read_pvd(out + "/acoustic_wave.pvd").size(), 2u);
 }
 
 TEST(RunOutput, EndTimeOffTheOutputTimesGetsAFinalFrame) {
@@ -74,7 +58,7 @@ TEST(RunOutput, EndTimeOffTheOutputTimesGetsAFinalFrame) {
   const auto js = summary(out);
   EXPECT_NEAR(js["simulated_time"].get<double>(), 0.001, 1e-15);
   expect_last_frame_is_last_state(out, "acoustic_wave");
-  const auto frames = pvd_frames(out + "/acoustic_wave.pvd");
+  const auto frames = read_pvd(out + "/acoustic_wave.pvd");
   ASSERT_EQ(frames.size(), 4u);
   // A frame's time is the exact time of its state: the first step at or past the output time.
   EXPECT_GE(frames[1].time, 0.0004 * (1 - 1e-12));
@@ -93,10 +77,8 @@ TEST(RunOutput, InterruptWritesLastFrameAndSummary) {
                           "kill -INT $pid; wait $pid; echo rc=$?";
   auto r = run_command("bash -c '" + cmd + "'");
   EXPECT_NE(r.output.find("rc=130"), std::string::npos) << r.output;
-  std::ifstream log(out + ".log");
-  std::stringstream text;
-  text << log.rdbuf();
-  EXPECT_NE(text.str().find("monosph: interrupted"), std::string::npos) << text.str();
+  const std::string log = file_text(out + ".log");
+  EXPECT_NE(log.find("monosph: interrupted"), std::string::npos) << log;
   const auto js = summary(out);
   EXPECT_EQ(js["status"], "interrupted");
   EXPECT_LT(js["simulated_time"].get<double>(), 100.0);
