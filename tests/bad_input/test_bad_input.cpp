@@ -38,6 +38,10 @@ const Case kCases[] = {
     {"contact_law_typo.yaml", "contact.law: 'herz' is not allowed"},
     {"self_contact_too_large.yaml",
      "bodies[0] (block).self_contact.distance: must be below 1 (a fraction of dp)"},
+    {"profile_zero_bins.yaml", "probes.list[0].bins: must be at least 1, got 0"},
+    {"rigid_probe_not_rigid.yaml", "probes.list[0].body: 'block' is not a rigid body"},
+    {"weight_ignored.yaml",
+     "probes.list[0].weight: only integral, mean and kinetic_energy probes take a weight"},
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
