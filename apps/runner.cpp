@@ -196,6 +196,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     }
     if (!csv) throw InputError("output: cannot write " + csv_path.string());
   }
+  if (opt.write_output) probes.open_profiles(out, restart_meta != nullptr, sim.time());
   auto last_flush = Clock::now();
   auto sample = [&] {
     if (!opt.write_output) return;

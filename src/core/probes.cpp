@@ -102,6 +102,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
       items_.push_back(std::move(it));
       continue;
     }
+    if (s.type.rfind("rigid_", 0) == 0)
+      throw InputError(where + ".type: '" + s.type + "' needs the clusters module (a rigid body)");
     if (s.type == "fluid_force")
       throw InputError(where + ".type: 'fluid_force' needs the fluid module (a fluid body)");
     if (s.type.rfind("surface_", 0) == 0)
@@ -116,6 +118,10 @@ Probes<D>::Probes(Simulation<D>& sim) {
     }
     for (std::size_t b = 0; b < sim.bodies().size(); ++b)
       if (!s.target.empty() && sim.bodies()[b].name == s.target) it->target = static_cast<int>(b);
+    if (s.type == "profile") {  // its own file, no column
+      profiles_.push_back(std::make_unique<ProfileProbe<D>>(sim, s, it->field, it->body));
+      continue;
+    }
     if (s.type == "grain_impacts" || s.type == "contact_pairs")
       throw InputError(where + ".type: '" + s.type + "' needs the contact module (a rigid body)");
     if (s.type == "disorder" && !p.has("disorder"))
@@ -147,6 +153,18 @@ Probes<D>::Probes(Simulation<D>& sim) {
 
 template <int D>
 Probes<D>::~Probes() = default;
+
+template <int D>
+void Probes<D>::open_profiles(const std::filesystem::path& dir, bool restarted, double time) {
+  for (auto& pr : profiles_) pr->open(dir, restarted, time);
+}
+
+template <int D>
+const ProfileBins& Probes<D>::profile(const std::string& name) const {
+  for (const auto& pr : profiles_)
+    if (pr->name() == name) return pr->last();
+  throw std::out_of_range("no profile probe named '" + name + "'");
+}
 
 template <int D>
 std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
@@ -186,21 +204,29 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       }
       return m[i] / rho[i] * (ss + pr[i] * pr[i] / (2 * mm.bulk_modulus));
     };
+    // This rank's share of the energy stored in contacts (grain contact, rigid surfaces).
+    auto contact_energy = [&] {
+      double e = 0;
+      for (const auto& mod : sim.modules()) e += mod->potential_energy(sim);
+      return e;
+    };
     auto weight = [&](std::size_t i) {
       if (it->weight.empty()) return 1.0;
       return it->weight(x[i][0], x[i][1], D == 3 ? x[i][D - 1] : 0.0, sim.time());
     };
     if (s.type == "total_energy") {
       // kinetic + elastic and hourglass-spring energy (solids) + potential of each body's constant
-      // body force, -m g.x
+      // body force, -m g.x; + the energy of the contacts when it is the whole scene's
       const int kh = p.find("hourglass_energy");
-      double e = 0;
+      double e = it->body < 0 ? contact_energy() : 0.0;
       for (std::size_t i = 0; i < n; ++i) {
         if (!in_body(i)) continue;
         e += 0.5 * m[i] * v[i].squaredNorm() - m[i] * sim.body_force(bd[i]).dot(x[i]) + elastic(i);
         if (kh >= 0) e += p.template view<double>(kh)[i];  // hourglass springs (solid module)
       }
       out.push_back(comm.sum(e));
+    } else if (s.type == "contact_energy") {
+      out.push_back(comm.sum(contact_energy()));
     } else if (s.type == "kinetic_energy") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
@@ -347,6 +373,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       out.push_back(comm.max(worst));
     }
   }
+  for (auto& pr : profiles_) pr->sample(sim);
   return out;
 }
 

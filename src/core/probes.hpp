@@ -1,10 +1,12 @@
 #pragma once
 // Probes: scalar time series sampled from the particles (CSV), and the metrics a scene's
 // reference values are compared with (frequency, period, final, max, min, mean).
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "profile_probe.hpp"
 #include "simulation.hpp"
 
 namespace monosph {
@@ -15,11 +17,19 @@ class Probes {
   explicit Probes(Simulation<D>& sim);  // validates field names (InputError)
   ~Probes();
   const std::vector<std::string>& columns() const { return columns_; }
+  // One value per column; profile probes (no column) sample their bins and write their files.
   std::vector<double> sample(Simulation<D>& sim);
+  // Profile probes write profile_<name>.csv into `dir` from now on (rank 0); on a restart
+  // (`restarted`) the rows of an existing file up to `time` are kept. Without this call they
+  // sample but write nothing (tests).
+  void open_profiles(const std::filesystem::path& dir, bool restarted, double time);
+  // The last sample of the profile probe `name` (std::out_of_range when there is none).
+  const ProfileBins& profile(const std::string& name) const;
 
  private:
   struct Item;
   std::vector<std::unique_ptr<Item>> items_;
+  std::vector<std::unique_ptr<ProfileProbe<D>>> profiles_;
   std::vector<std::string> columns_;
 };
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "expression.hpp"
+#include "scene_probes.hpp"
 #include "scene_reader.hpp"
 
 namespace monosph {
@@ -176,17 +177,6 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
                        (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
   }
   return s;
-}
-
-// A reference or check names a probe, or one component of a vector probe ("load_y").
-bool names_probe_column(const std::vector<ProbeSpec>& probes, const std::string& name) {
-  for (const auto& ps : probes) {
-    if (ps.name == name) return true;
-    if (ps.type == "momentum" || ps.type == "reaction_force")
-      for (const char* ax : {"_x", "_y", "_z"})
-        if (ps.name + ax == name) return true;
-  }
-  return false;
 }
 
 // A rigid surface (MMB Sect. 3; built by src/rigid): one geometry key, motion, contact parameters.
@@ -958,98 +948,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
 
   if (r.has("probes")) {
     MapReader pr(r.node("probes"), "probes");
-    s.probe_every = pr.non_negative("every", 0.0);
-    auto list = pr.node("list");
-    if (!list.IsSequence()) scene_error("probes.list", "expected a list of probes");
-    static const std::vector<std::string> types = {
-        "kinetic_energy", "elastic_energy", "disorder",         "total_mass",
-        "momentum",       "abs_momentum",   "max_speed",        "min_distance",
-        "integral",       "mean",           "value_at",         "tracked",
-        "reaction_force", "surface_force",  "surface_contacts", "removed_mass",
-        "field_max",      "field_min",      "extent",           "surface_displacement",
-        "fluid_force",    "penetration",    "grain_impacts",    "contact_pairs",
-        "total_energy",   "pieces",         "diameter"};
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      std::string p = "probes.list[" + std::to_string(i) + "]";
-      MapReader q(list[i], p);
-      ProbeSpec ps;
-      ps.name = q.text("name");
-      ps.type = q.choice("type", types);
-      if (ps.type == "integral" || ps.type == "mean" || ps.type == "value_at" ||
-          ps.type == "tracked" || ps.type == "field_max" || ps.type == "field_min" ||
-          ps.type == "extent") {
-        ps.field = q.text("field");
-        auto dot = ps.field.find('.');
-        if (dot != std::string::npos) {
-          std::string c = ps.field.substr(dot + 1);
-          ps.component = c == "x" ? 0 : c == "y" ? 1 : c == "z" ? 2 : -2;
-          if (ps.component < 0 || ps.component >= dim)
-            scene_error(p + ".field", "component '" + c + "' is not an axis");
-          ps.field = ps.field.substr(0, dot);
-        }
-      } else {
-        q.optional("field");
-      }
-      ps.weight_expr = q.text("weight", "");
-      if (!ps.weight_expr.empty()) check_expression(ps.weight_expr, q.at("weight"));
-      const bool on_surface = ps.type == "surface_force" || ps.type == "surface_contacts" ||
-                              ps.type == "surface_displacement";
-      if (on_surface && q.has("surface")) {  // the surface's name (`body` is accepted too)
-        if (q.has("body")) scene_error(p, "give either surface or body, not both");
-        ps.body = q.text("surface");
-      }
-      if (ps.body.empty()) ps.body = q.text("body", "");
-      if (ps.type == "penetration") {
-        ps.target = q.text("target", "");
-        bool found = ps.target.empty();
-        for (const auto& body : s.bodies) found = found || body.name == ps.target;
-        if (!found) scene_error(p + ".target", "no body named '" + ps.target + "'");
-      } else {
-        q.optional("target");
-      }
-      if (ps.type == "value_at" || ps.type == "tracked" || ps.type == "diameter")
-        ps.point = q.vector("point", dim);
-      else
-        q.optional("point");
-      if (ps.type == "diameter") {
-        ps.axis = q.vector("axis", dim);
-        double a2 = 0;
-        for (double c : ps.axis) a2 += c * c;
-        if (!(a2 > 0)) scene_error(p + ".axis", "must not be the zero vector");
-        for (double& c : ps.axis) c /= std::sqrt(a2);
-      } else {
-        q.optional("axis");
-      }
-      if (ps.type == "pieces") {
-        ps.min_particles = q.integer("min_particles", ps.min_particles);
-        if (ps.min_particles < 1) scene_error(q.at("min_particles"), "must be at least 1");
-      } else {
-        q.optional("min_particles");
-      }
-      if (on_surface) {
-        bool found = false;
-        std::vector<std::string> names;
-        for (const auto& sf : s.surfaces)
-          found = found || sf.name == ps.body, names.push_back(sf.name);
-        if (ps.body.empty()) scene_error(p + ".surface", "missing (the name of a surface)");
-        if (!found) {
-          std::string hint = closest_word(ps.body, names);
-          scene_error(p + ".surface", "no surface named '" + ps.body + "' in surfaces" +
-                                          (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
-        }
-      } else if (ps.type == "reaction_force") {
-        bool found = false;
-        for (const auto& bc : s.boundaries) found = found || bc.name == ps.body;
-        if (!found)
-          scene_error(p + ".body", "reaction_force needs the name of a boundary condition");
-      } else if (!ps.body.empty()) {
-        bool found = false;
-        for (const auto& body : s.bodies) found = found || body.name == ps.body;
-        if (!found) scene_error(p + ".body", "no body named '" + ps.body + "'");
-      }
-      q.finish();
-      s.probes.push_back(std::move(ps));
-    }
+    read_probes(pr, s);  // scene_probes.cpp
     pr.finish();
   } else {
     r.optional("probes");

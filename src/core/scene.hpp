@@ -155,8 +155,11 @@ struct ProbeSpec {
   std::string target;  // penetration: the body penetrated (empty: every solid particle)
   int component = -1;
   Point point;
-  Point axis;              // diameter: direction of the axis through `point`
+  Point axis;              // diameter, profile: unit direction (of the axis through `point`)
   int min_particles = 10;  // pieces: smaller clusters (spray, single particles) are not counted
+  int bins = 0;            // profile: number of bins along `axis`
+  Point range;             // profile: [lo, hi] along `axis` (empty: the default range)
+  int columns = 1;         // columns in probes.csv (name, or name_x, name_y...; 0: profile)
 };
 
 struct ReferenceSpec {

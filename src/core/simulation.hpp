@@ -47,6 +47,11 @@ class Module {
   // "_y"... or ""), empty when the type is not this module's; `probe` appends one value per column.
   virtual std::vector<std::string> probe_columns(const ProbeSpec&) const { return {}; }
   virtual void probe(Simulation<D>&, const ProbeSpec&, std::vector<double>& out) {}
+  // Elastic energy stored in the module's contacts now (Hertz or Lennard-Jones springs; not the
+  // work dissipated by dashpots or friction): this rank's share, from its owned particles, so
+  // that the sum over the ranks is the total (probes contact_energy and total_energy). Per metre
+  // of depth in 2D. No collective call inside.
+  virtual double potential_energy(Simulation<D>&) { return 0.0; }
 };
 
 // Pairs within the kernel support at the current positions, rebuilt with every force evaluation

@@ -21,6 +21,13 @@ double compliance(const Material& m) {
   return (1 - nu * nu) / e;
 }
 
+// Pairs in contact: a rigid-cluster particle with a solid, a wall or another cluster's particle.
+bool contact_pair(std::int64_t pi, std::int64_t pj, std::int64_t cluster_i,
+                  std::int64_t cluster_j) {
+  if (pi == kRigid) return pj == kSolid || pj == kWall || (pj == kRigid && cluster_j != cluster_i);
+  return (pi == kSolid || pi == kWall) && pj == kRigid;
+}
+
 }  // namespace
 
 template <int D>
@@ -53,6 +60,38 @@ double ContactModule<D>::pair_force(double r, int mi, int mj, double m_i, double
 }
 
 template <int D>
+double ContactModule<D>::pair_energy(double r, int mi, int mj, double m_i, double m_j) const {
+  if (r >= dc_) return 0.0;
+  if (hertz_) return hertz_energy(estar_[idx(mi, mj)], 0.25 * dc_, dc_ - r) / depth_;
+  // Monaghan 1994: F = m_ij D (q^p1 - q^p2)/r with q = d_c/r; U(r) = int_r^d_c F ds
+  // = m_ij D [(q^p1 - 1)/p1 - (q^p2 - 1)/p2].
+  const double q = dc_ / r, mij = 2 * m_i * m_j / (m_i + m_j);
+  const double p1 = spec_.p1, p2 = spec_.p2;
+  return mij * spec_.strength * ((std::pow(q, p1) - 1) / p1 - (std::pow(q, p2) - 1) / p2);
+}
+
+template <int D>
+double ContactModule<D>::potential_energy(Simulation<D>& sim) {
+  // Serial over the owned particles in index order (the same for any thread count); each side of
+  // a pair adds half, so a pair split between two ranks counts once.
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  auto ph = p.phase();
+  auto m = p.m();
+  auto mt = p.material();
+  auto cl = p.template view<std::int64_t>(kcl_);
+  double e = 0;
+  for (std::size_t i = 0; i < sim.owned(); ++i)
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (!contact_pair(ph[i], ph[j], cl[i], cl[j])) continue;
+      e += 0.5 * pair_energy(pl.r[k].norm(), static_cast<int>(mt[i]), static_cast<int>(mt[j]), m[i],
+                             m[j]);
+    }
+  return e;
+}
+
+template <int D>
 void ContactModule<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& pl = sim.pairs();
@@ -82,10 +121,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       const auto pj = ph[j];
-      const bool contact = pi == kRigid
-                               ? (pj == kSolid || pj == kWall || (pj == kRigid && cl[j] != cl[i]))
-                               : pj == kRigid;
-      if (!contact) continue;
+      if (!contact_pair(pi, pj, cl[i], cl[j])) continue;
       const double r = pl.r[k].norm();
       // Time-step stiffness k/m of this particle, at an overlap of at least 0.1 R.
       if (pi != kWall) {

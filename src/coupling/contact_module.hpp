@@ -12,8 +12,8 @@
 // 2D forces are per metre of depth: the 3D point force is divided by t_z = dp (equations.md Sect.
 // 0). Each particle sums its own side of every pair: exactly opposite forces, momentum conserved to
 // round-off. Contact pairs take no part in any SPH sum. Probes: grain_impacts (clusters that came
-// into contact with a solid or wall body, counted at first touch; released beyond 1.1 d_c) and
-// contact_pairs (pairs in contact now).
+// into contact with a solid or wall body, counted at first touch; released beyond 1.1 d_c),
+// contact_pairs (pairs in contact now) and, through potential_energy, contact_energy.
 #include <vector>
 
 #include "core/simulation.hpp"
@@ -35,6 +35,12 @@ class ContactModule : public Module<D> {
 
   // Magnitude of the repulsive force of a pair at distance r (before any damping), per depth.
   double pair_force(double r, int material_i, int material_j, double m_i, double m_j) const;
+  // Elastic energy of a pair at distance r, the integral of pair_force from r to d_c (zero at
+  // and beyond d_c; dU/dr = -F), per depth in 2D.
+  double pair_energy(double r, int material_i, int material_j, double m_i, double m_j) const;
+  // This rank's share of the energy of all contact pairs now: half of each pair's energy for
+  // each owned particle of it (dashpot work is dissipated, not stored).
+  double potential_energy(Simulation<D>& sim) override;
   double contact_modulus(int material_i, int material_j) const {
     return estar_[idx(material_i, material_j)];
   }

@@ -23,6 +23,7 @@ ClusterModule<D>::ClusterModule(Simulation<D>& sim) {
   // grad v of the rigid motion, skew(omega), read by the fluid's wall condition (zero elsewhere)
   kG_ = p.add_field("rigid_velocity_gradient", D * D);
   const Scene& s = sim.scene();
+  for (const auto& b : sim.bodies()) body_names_.push_back(b.name);
   for (int a = 0; a < D; ++a) {
     lo_[a] = s.domain_min[a];
     len_[a] = s.domain_max[a] - s.domain_min[a];

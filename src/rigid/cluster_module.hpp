@@ -27,6 +27,19 @@ class ClusterModule : public Module<D> {
   double max_dt(Simulation<D>& sim) override;
   void save_state(std::map<std::string, double>& s) const override;
   void load_state(Simulation<D>& sim, const std::map<std::string, double>& s) override;
+  // Probes rigid_centre, rigid_velocity (columns _x, _y(, _z)) and rigid_angular_velocity (one
+  // column in 2D, _x, _y, _z in 3D) of the rigid body `body` (cluster_probes.cpp).
+  std::vector<std::string> probe_columns(const ProbeSpec& s) const override;
+  void probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<double>& out) override;
+
+  // Motion of a whole rigid body (all its clusters): centre of mass, velocity of the centre and
+  // angular velocity I^-1 L of the clusters about that centre (2D: z component only). For a
+  // body of one cluster these are the cluster's own values.
+  struct BodyMotion {
+    Vec<D> centre = Vec<D>::Zero(), velocity = Vec<D>::Zero();
+    Vec3 omega = Vec3::Zero();
+  };
+  BodyMotion body_motion(int body) const;
 
   struct Cluster {
     int body = 0;
@@ -54,6 +67,7 @@ class ClusterModule : public Module<D> {
   Vec<D> min_image(Vec<D> d) const;
 
   int kcl_, koff_, kG_;
+  std::vector<std::string> body_names_;  // of every body of the scene (probes name them)
   std::vector<Cluster> c_;
   std::vector<double> reduce_buf_;  // force and torque of all clusters (MPI sum)
   Vec<D> lo_, len_;

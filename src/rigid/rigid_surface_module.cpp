@@ -154,6 +154,29 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
 }
 
 template <int D>
+double RigidSurfaceModule<D>::potential_energy(Simulation<D>& sim) {
+  // The contacts of forces() at the current positions: the closest point of each surface within
+  // R; serial over the owned particles (the same for any thread count).
+  sync(sim.time());
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto ph = p.phase();
+  auto mt = p.material();
+  double e = 0;
+  for (std::size_t i = 0; i < sim.owned(); ++i) {
+    if (ph[i] != kSolid && ph[i] != kFluid) continue;
+    for (const Surface& s : s_) {
+      const Vec<D> xl = x[i] - s.displacement;
+      Vec<D> c;
+      int el;
+      if (!s.geometry.closest(xl, radius_, c, el)) continue;
+      e += hertz_energy(s.e_star[mt[i]], radius_, radius_ - (xl - c).norm()) / depth_;
+    }
+  }
+  return e;
+}
+
+template <int D>
 double RigidSurfaceModule<D>::max_dt(Simulation<D>&) {
   // A Hertz contact is a spring of frequency sqrt(k/m): dt <= 0.1 pi sqrt(m/k), 20 steps per
   // period (../shared/reference/equations.md Sect. 7), with k at the largest overlap (>= 0.1 R).

@@ -24,6 +24,9 @@ class RigidSurfaceModule : public Module<D> {
   double max_dt(Simulation<D>& sim) override;
   std::vector<std::string> probe_columns(const ProbeSpec& spec) const override;
   void probe(Simulation<D>& sim, const ProbeSpec& spec, std::vector<double>& out) override;
+  // This rank's share of the Hertz energy 8/15 E* sqrt(R) delta^2.5 (per depth in 2D) of the
+  // owned particles touching a surface now; friction and the dashpot store none.
+  double potential_energy(Simulation<D>& sim) override;
 
   std::size_t size() const { return s_.size(); }
   int find(const std::string& name) const;  // -1 if there is no such surface
@@ -49,7 +52,7 @@ class RigidSurfaceModule : public Module<D> {
     bool constant = true;
     Vec<D> v0 = Vec<D>::Zero();  // the velocity when constant
     double friction = 0;
-    double damping = 0;  // normal dashpot, ratio of critical
+    double damping = 0;          // normal dashpot, ratio of critical
     std::vector<double> e_star;  // per material
     Vec<D> displacement = Vec<D>::Zero(), velocity = Vec<D>::Zero(), reaction = Vec<D>::Zero();
     int contacts = 0;

@@ -42,6 +42,10 @@ const Case kCases[] = {
      "materials.al.plasticity: expected a map {A, B, n, ...} or 'none'"},
     {"plasticity_none_keeps_damage.yaml",
      "damage grows with plastic strain: give `plasticity` too, or `damage: none`"},
+    {"profile_zero_bins.yaml", "probes.list[0].bins: must be at least 1, got 0"},
+    {"rigid_probe_not_rigid.yaml", "probes.list[0].body: 'block' is not a rigid body"},
+    {"weight_ignored.yaml",
+     "probes.list[0].weight: only integral, mean and kinetic_energy probes take a weight"},
 };
 
 void PrintTo(const Case& c, std::ostream* os) {

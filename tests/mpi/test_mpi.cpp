@@ -200,6 +200,29 @@ TEST(Mpi, DamBreakRebalancesAsTheWaterMovesAndStaysOnTheSerialRun) {
   }
 }
 
+TEST(Mpi, GrainBounceProbesMatchSerial) {
+  // A grain hitting a steel block, in contact for the 200 steps: rigid-body probes and contact
+  // energy (probes.csv, compared by serial_vs_ranks) and the block's profile file, whose bins are
+  // summed over the ranks and written by rank 0.
+  serial_vs_ranks({"bounce", "tests/scenes/grain_bounce.yaml", ""}, {2});
+  auto ts = read_csv(MONOSPH_TEST_OUT "/mpi_bounce_serial/profile_vy.csv");
+  auto tm = read_csv(MONOSPH_TEST_OUT "/mpi_bounce_np2/profile_vy.csv");
+  ASSERT_EQ(ts.head, (std::vector<std::string>{"time", "step", "position", "mean", "particles"}));
+  ASSERT_EQ(tm.head, ts.head);
+  ASSERT_EQ(ts["mean"].size(), 201u * 10);
+  ASSERT_EQ(tm["mean"].size(), ts["mean"].size());
+  double scale = 0;
+  for (double v : ts["mean"]) scale = std::max(scale, std::abs(v));
+  EXPECT_GT(scale, 0.01);  // the block moves
+  for (std::size_t q = 0; q < ts["mean"].size(); ++q) {
+    EXPECT_EQ(tm["position"][q], ts["position"][q]);
+    EXPECT_EQ(tm["particles"][q], ts["particles"][q]);
+    EXPECT_NEAR(tm["mean"][q], ts["mean"][q], 1e-8 * scale) << "row " << q;
+  }
+  auto probes = read_csv(MONOSPH_TEST_OUT "/mpi_bounce_np2/probes.csv");
+  EXPECT_GT(max_of(probes["contact"]), 0.1 * probes["energy"].front());  // in contact
+}
+
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
