@@ -42,6 +42,12 @@ const Field& Particles<D>::field(const std::string& name) const {
 }
 
 template <int D>
+void Particles<D>::set_meaning(std::initializer_list<int> ks, unsigned phases, double pad_zz) {
+  for (int k : ks)
+    if (k >= 0) fields_[k].phases = phases, fields_[k].pad_zz = pad_zz;
+}
+
+template <int D>
 int Particles<D>::add_field(const std::string& name, int ncomp, FieldType type, bool output) {
   int k = find(name);
   if (k >= 0) {

@@ -1,6 +1,7 @@
 #pragma once
 // Particles<D>: one structure-of-arrays container for every phase. Always-present fields plus
 // fields that modules register on demand; removal with compaction; permutation for locality.
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -49,6 +50,8 @@ class Particles {
   // Registers a field (idempotent if the shape matches); returns its index.
   int add_field(const std::string& name, int ncomp, FieldType type = FieldType::Real,
                 bool output = false);
+  // Sets Field::phases (and pad_zz) of the fields ks; indices < 0 (fields not registered) skip.
+  void set_meaning(std::initializer_list<int> ks, unsigned phases, double pad_zz = 0);
   bool has(const std::string& name) const { return find(name) >= 0; }
   int find(const std::string& name) const;
   Field& field(int k) { return fields_[k]; }

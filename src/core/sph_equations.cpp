@@ -29,7 +29,7 @@ SphEquations<D>::SphEquations(Simulation<D>& sim, bool store_velocity_gradient) 
   auto& p = sim.particles();
   kshep_ = p.add_field("shepard", 1);
   kcorr_ = p.add_field("correction", D * D);
-  p.field(kcorr_).pad_zz = 1;  // the identity on a full support
+  p.set_meaning({kcorr_}, ~0u, 1.0);  // the identity on a full support: F_zz = 1 in 2D
   if (store_velocity_gradient) kgradv_ = p.add_field("velocity_gradient", D * D);
   for (const auto& b : sim.bodies()) {
     tl_.push_back(b.total_lagrangian ? 1 : 0);

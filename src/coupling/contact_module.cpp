@@ -35,7 +35,7 @@ ContactModule<D>::ContactModule(Simulation<D>& sim) {
   auto& p = sim.particles();
   kcl_ = p.add_field("cluster", 1, FieldType::Int, true);
   kcf_ = p.add_field("contact_force", D, FieldType::Real, true);  // per depth in 2D
-  p.field(kcf_).phases = ~phase_bit(kFluid);
+  p.set_meaning({kcf_}, ~phase_bit(kFluid));
   spec_ = sim.scene().contact;
   hertz_ = spec_.law == "hertz";
   dc_ = spec_.distance * sim.dp();

@@ -37,8 +37,8 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   kshift_ = p.add_field("shift_rate", D);                     // delta-plus shift / dt
   kff_ = p.add_field("fluid_force", D, FieldType::Real,
                      true);  // force of the fluid on a wall-like particle
-  for (int k : {kgrad_, klam_, kshift_}) p.field(k).phases = phase_bit(kFluid);
-  for (int k : {kpw_, kvw_, kff_}) p.field(k).phases = ~phase_bit(kFluid);  // wall-like particles
+  p.set_meaning({kgrad_, klam_, kshift_}, phase_bit(kFluid));
+  p.set_meaning({kpw_, kvw_, kff_}, ~phase_bit(kFluid));  // wall-like particles
   for (const auto& b : sim.bodies()) any_wall_ = any_wall_ || b.phase == kWall;
   // Viscous form: Morris et al. 1997 (default) or the central 2 (d + 2) nu pi_ij of Sun et al.
   // 2017, which conserves angular momentum. A scene with rigid clusters needs the central form:

@@ -58,13 +58,10 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   }
   if (any_damage_) kdmg_ = p.add_field("damage", 1, FieldType::Real, true);
   if (any_as_) kas_ = p.add_field("artificial_stress", D * D);
-  // Frames show these only on solid particles (NaN elsewhere); deformation gradients pad to
-  // F_zz = 1 in 2D (plane strain).
-  for (int k : {kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kFls_, khge_, klap_, kep_,
-                kepr_, kT_, ksy_, kdmg_, kas_})
-    if (k >= 0) p.field(k).phases = phase_bit(kSolid);
-  for (int k : {kF_, kFref_, kFinit_, kFls_})
-    if (k >= 0) p.field(k).pad_zz = 1;
+  // Frames: NaN off solid particles; deformation gradients pad to F_zz = 1 in 2D (plane strain).
+  p.set_meaning({kS_, kvm_, kX0_, kXref_, kdis_, khge_, klap_, kep_, kepr_, kT_, ksy_, kdmg_, kas_},
+                phase_bit(kSolid));
+  p.set_meaning({kF_, kFref_, kFinit_, kFls_}, phase_bit(kSolid), 1.0);
   bool any_tl = false;
   for (const auto& b : sim.bodies()) any_tl = any_tl || (b.phase == kSolid && b.total_lagrangian);
   if (any_tl) tl_ = std::make_unique<TotalLagrangian<D>>(sim, kS_, kF_, kgradv_, kX0_, kep_, ksy_);

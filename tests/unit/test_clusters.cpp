@@ -12,27 +12,15 @@
 #include "assemble.hpp"
 #include "coupling/contact_module.hpp"
 #include "rigid/cluster_module.hpp"
+#include "sim_helpers.hpp"
 #include "thread_helpers.hpp"
 
 using namespace monosph;
 
 namespace {
 
-template <int D>
-std::unique_ptr<Simulation<D>> build(const std::string& text) {
-  auto sim = std::make_unique<Simulation<D>>(load_scene_text(text));
-  assemble_modules(*sim);
-  sim->create_particles();
-  sim->init();
-  return sim;
-}
-
-template <class M, int D>
-M& module(Simulation<D>& sim) {
-  for (auto& m : sim.modules())
-    if (auto* c = dynamic_cast<M*>(m.get())) return *c;
-  throw std::logic_error("no such module");
-}
+using test::build;
+using test::module;
 
 // Linear momentum and angular momentum about the origin of all clusters (2D: z only).
 template <int D>

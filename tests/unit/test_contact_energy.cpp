@@ -11,26 +11,14 @@
 #include "core/probes.hpp"
 #include "coupling/contact_module.hpp"
 #include "rigid/rigid_surface_module.hpp"
+#include "sim_helpers.hpp"
 
 using namespace monosph;
 
 namespace {
 
-template <int D>
-std::unique_ptr<Simulation<D>> build(const std::string& text) {
-  auto sim = std::make_unique<Simulation<D>>(load_scene_text(text));
-  assemble_modules(*sim);
-  sim->create_particles();
-  sim->init();
-  return sim;
-}
-
-template <class M, int D>
-M& module(Simulation<D>& sim) {
-  for (auto& m : sim.modules())
-    if (auto* c = dynamic_cast<M*>(m.get())) return *c;
-  throw std::logic_error("no such module");
-}
+using test::build;
+using test::module;
 
 // An iron grain (d = 10 dp) touching an iron wall at t = 0 and moving into it at 1 m/s; no body
 // force, no damping. `law` is the scene's contact section.

@@ -11,19 +11,13 @@
 #include "assemble.hpp"
 #include "core/probes.hpp"
 #include "rigid/cluster_module.hpp"
+#include "sim_helpers.hpp"
 
 using namespace monosph;
 
 namespace {
 
-template <int D>
-std::unique_ptr<Simulation<D>> build(const std::string& text) {
-  auto sim = std::make_unique<Simulation<D>>(load_scene_text(text));
-  assemble_modules(*sim);
-  sim->create_particles();
-  sim->init();
-  return sim;
-}
+using test::build;
 
 // Bodies and probes in vacuum: domain [0, 0.2] x [0, 0.1], dp = 1 mm, iron, no body force.
 std::string vacuum2(const std::string& bodies, const std::string& probes) {
