@@ -104,6 +104,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
     }
     if (s.type.rfind("rigid_", 0) == 0)
       throw InputError(where + ".type: '" + s.type + "' needs the clusters module (a rigid body)");
+    if (s.type.rfind("lubrication_", 0) == 0)
+      throw InputError(where + ".type: '" + s.type + "' needs a lubrication section");
     if (s.type == "fluid_force")
       throw InputError(where + ".type: 'fluid_force' needs the fluid module (a fluid body)");
     if (s.type.rfind("surface_", 0) == 0)

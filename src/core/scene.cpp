@@ -57,7 +57,8 @@ int Scene::material_index(const std::string& n) const {
 namespace {
 
 // Physics modules for scenes (switched on by the bodies and surfaces that need them).
-const std::vector<std::string> kModules = {"solid", "rigid", "fluid", "clusters", "contact"};
+const std::vector<std::string> kModules = {"solid",    "rigid",   "fluid",
+                                           "clusters", "contact", "lubrication"};
 
 void check_expression(const std::string& text, const std::string& path) {
   Expression e(text, path);
@@ -372,6 +373,16 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   m.heat_capacity = r.non_negative("heat_capacity", m.heat_capacity);
   m.taylor_quinney = r.non_negative("taylor_quinney", m.taylor_quinney);
   m.viscosity = r.non_negative("viscosity", m.viscosity);
+  // Fluids: the pressure below which the liquid cavitates (gauge, Pa; Brennen 1995): the EOS
+  // pressure is held at it, so that the fluid carries no larger tension.
+  if (r.has("cavitation_pressure")) {
+    m.cavitation_pressure = r.number("cavitation_pressure");
+    if (!(m.cavitation_pressure <= 0))
+      scene_error(r.at("cavitation_pressure"),
+                  "must be <= 0 (a gauge pressure: the tension the liquid bears)");
+  } else {
+    r.optional("cavitation_pressure");
+  }
   // Stress from F for total-Lagrangian bodies (Ganzenmueller 2015 Eq. 44); default hypoelastic.
   m.neo_hookean =
       r.choice("elasticity", {"hypoelastic", "neo_hookean"}, "hypoelastic") == "neo_hookean";
@@ -436,6 +447,42 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
 }
 
 }  // namespace
+
+// Section `lubrication` (src/coupling/lubrication_module.hpp): needs a rigid and a fluid body;
+// the film viscosity defaults to the fluid's.
+static void read_lubrication(MapReader& r, Scene& s) {
+  if (!r.has("lubrication")) {
+    r.optional("lubrication");
+    return;
+  }
+  MapReader c(r.node("lubrication"), "lubrication");
+  auto& l = s.lubrication;
+  l.on = true;
+  l.cutoff = c.positive("cutoff", 1.0);
+  l.min_gap = c.positive("min_gap", 0.05);
+  if (!(l.min_gap < l.cutoff))
+    scene_error("lubrication.min_gap", "must be below lubrication.cutoff");
+  const BodySpec* fluid = nullptr;
+  bool rigid = false;
+  for (const auto& b : s.bodies) {
+    if (b.phase == "fluid" && !fluid) fluid = &b;
+    rigid = rigid || b.phase == "rigid";
+  }
+  if (!rigid)
+    scene_error("lubrication",
+                "needs a rigid body (the film lies between a cluster and a surface)");
+  if (c.has("viscosity")) {
+    l.viscosity = c.positive("viscosity");
+  } else {
+    if (!fluid) scene_error("lubrication.viscosity", "is required without a fluid body");
+    l.viscosity = s.materials[fluid->material].viscosity;
+    if (!(l.viscosity > 0))
+      scene_error("lubrication.viscosity", "the fluid's material has no viscosity: give one");
+  }
+  c.finish();
+  if (std::find(s.modules.begin(), s.modules.end(), "lubrication") == s.modules.end())
+    s.modules.push_back("lubrication");
+}
 
 Scene load_scene_text(const std::string& text, const std::vector<std::string>& overrides,
                       const std::string& origin) {
@@ -524,9 +571,11 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   if (r.has("modules")) {
     for (const auto& m : r.strings("modules")) {
       if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
-        scene_error("modules", "unknown module '" + m +
-                                   "' (available: solid, rigid, fluid, clusters, contact; they are "
-                                   "switched on by the bodies and surfaces that need them)");
+        scene_error(
+            "modules",
+            "unknown module '" + m +
+                "' (available: solid, rigid, fluid, clusters, contact, lubrication; they are "
+                "switched on by the bodies and surfaces that need them)");
       s.modules.push_back(m);
     }
   } else {
@@ -718,6 +767,13 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       } else {
         b.optional("wall_pressure");
       }
+      if (b.has("pressure_gradient")) {  // Thomas & Couchman 1992 (docs/theory.md)
+        if (body.phase != "fluid") scene_error(p + ".pressure_gradient", "applies to fluid bodies");
+        body.monotone_pressure =
+            b.choice("pressure_gradient", {"kernel", "thomas_couchman"}) == "thomas_couchman";
+      } else {
+        b.optional("pressure_gradient");
+      }
       if (b.has("damping")) {  // dynamic relaxation to a static state (quasi-static loading)
         if (body.phase != "solid" && body.phase != "fluid")
           scene_error(p + ".damping", "applies to solid and fluid bodies");
@@ -891,6 +947,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   } else {
     r.optional("contact");
   }
+  read_lubrication(r, s);
 
   s.body_force = r.has("body_force") ? r.vector("body_force", dim)
                                      : (r.optional("body_force"), Point(dim, 0.0));

@@ -52,6 +52,7 @@ struct Material {
   double heat_capacity = 0;     // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
   double taylor_quinney = 0.9;  // eta of MMB Eq. 24
   double viscosity = 0;         // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
+  double cavitation_pressure = -std::numeric_limits<double>::infinity();  // fluid: p >= it
   // `elasticity: neo_hookean`: compressible neo-Hookean PK2 stress from F (Ganzenmueller 2015
   // Eq. 44), total-Lagrangian bodies only; otherwise hypoelastic (Jaumann S + EOS pressure).
   bool neo_hookean = false;
@@ -101,6 +102,7 @@ struct BodySpec {
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
   bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
   bool non_negative_wall_pressure = false;  // Adami p_w clipped at 0 (no suction at free surfaces)
+  bool monotone_pressure = false;  // fluid: pressure force with the Thomas-Couchman gradient
   // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular
   // momentum), auto (central when the scene has rigid clusters, else morris)
   std::string viscous_form = "auto";
@@ -121,6 +123,14 @@ struct ContactSpec {
   double damping = 0;         // hertz: normal dashpot, ratio of critical
   double strength = 0;        // lennard_jones: D (m^2/s^2)
   double p1 = 12, p2 = 4;     // lennard_jones exponents
+};
+
+// Sub-grid lubrication between rigid clusters and surfaces (section `lubrication`; src/coupling).
+struct LubricationSpec {
+  bool on = false;
+  double cutoff = 1.0;    // resolved gap h_c, in dp: the film force is added below it
+  double min_gap = 0.05;  // smallest gap (surface roughness), in dp
+  double viscosity = 0;   // dynamic viscosity of the film (default: the fluid's)
 };
 
 struct BoundarySpec {
@@ -200,6 +210,7 @@ struct Scene {
   std::vector<BoundarySpec> boundaries;
   std::vector<SurfaceSpec> surfaces;  // rigid surfaces (section `surfaces`)
   ContactSpec contact;                // section `contact`
+  LubricationSpec lubrication;        // section `lubrication`
   std::vector<std::string> modules;
   Point body_force;
   double end_time = 0;

@@ -9,22 +9,40 @@ namespace monosph {
 
 namespace {
 
-const std::vector<std::string> kTypes = {"kinetic_energy",   "elastic_energy",
-                                         "disorder",         "total_mass",
-                                         "momentum",         "abs_momentum",
-                                         "max_speed",        "min_distance",
-                                         "integral",         "mean",
-                                         "value_at",         "tracked",
-                                         "reaction_force",   "surface_force",
-                                         "surface_contacts", "removed_mass",
-                                         "field_max",        "field_min",
-                                         "extent",           "surface_displacement",
-                                         "fluid_force",      "penetration",
-                                         "grain_impacts",    "contact_pairs",
-                                         "total_energy",     "pieces",
-                                         "diameter",         "rigid_centre",
-                                         "rigid_velocity",   "rigid_angular_velocity",
-                                         "profile",          "contact_energy"};
+const std::vector<std::string> kTypes = {"kinetic_energy",
+                                         "elastic_energy",
+                                         "disorder",
+                                         "total_mass",
+                                         "momentum",
+                                         "abs_momentum",
+                                         "max_speed",
+                                         "min_distance",
+                                         "integral",
+                                         "mean",
+                                         "value_at",
+                                         "tracked",
+                                         "reaction_force",
+                                         "surface_force",
+                                         "surface_contacts",
+                                         "removed_mass",
+                                         "field_max",
+                                         "field_min",
+                                         "extent",
+                                         "surface_displacement",
+                                         "fluid_force",
+                                         "penetration",
+                                         "grain_impacts",
+                                         "contact_pairs",
+                                         "total_energy",
+                                         "pieces",
+                                         "diameter",
+                                         "rigid_centre",
+                                         "rigid_velocity",
+                                         "rigid_angular_velocity",
+                                         "profile",
+                                         "contact_energy",
+                                         "lubrication_force",
+                                         "lubrication_gap"};
 
 bool is_one_of(const std::string& type, std::initializer_list<const char*> types) {
   return std::any_of(types.begin(), types.end(), [&](const char* t) { return type == t; });
@@ -39,7 +57,7 @@ int column_count(const std::string& type, int dim) {
   if (type == "profile") return 0;
   if (type == "rigid_angular_velocity") return dim == 3 ? 3 : 1;
   if (is_one_of(type, {"momentum", "reaction_force", "surface_force", "surface_displacement",
-                       "rigid_centre", "rigid_velocity"}))
+                       "rigid_centre", "rigid_velocity", "lubrication_force"}))
     return dim;
   return 1;
 }
