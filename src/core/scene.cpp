@@ -458,7 +458,7 @@ static void read_lubrication(MapReader& r, Scene& s) {
   MapReader c(r.node("lubrication"), "lubrication");
   auto& l = s.lubrication;
   l.on = true;
-  l.cutoff = c.positive("cutoff", 1.0);
+  l.cutoff = c.positive("cutoff", 1.5);
   l.min_gap = c.positive("min_gap", 0.05);
   if (!(l.min_gap < l.cutoff))
     scene_error("lubrication.min_gap", "must be below lubrication.cutoff");
@@ -766,13 +766,6 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
             b.choice("wall_pressure", {"extrapolated", "non_negative"}) == "non_negative";
       } else {
         b.optional("wall_pressure");
-      }
-      if (b.has("pressure_gradient")) {  // Thomas & Couchman 1992 (docs/theory.md)
-        if (body.phase != "fluid") scene_error(p + ".pressure_gradient", "applies to fluid bodies");
-        body.monotone_pressure =
-            b.choice("pressure_gradient", {"kernel", "thomas_couchman"}) == "thomas_couchman";
-      } else {
-        b.optional("pressure_gradient");
       }
       if (b.has("damping")) {  // dynamic relaxation to a static state (quasi-static loading)
         if (body.phase != "solid" && body.phase != "fluid")

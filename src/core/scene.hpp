@@ -102,7 +102,6 @@ struct BodySpec {
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
   bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
   bool non_negative_wall_pressure = false;  // Adami p_w clipped at 0 (no suction at free surfaces)
-  bool monotone_pressure = false;  // fluid: pressure force with the Thomas-Couchman gradient
   // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular
   // momentum), auto (central when the scene has rigid clusters, else morris)
   std::string viscous_form = "auto";
@@ -128,7 +127,7 @@ struct ContactSpec {
 // Sub-grid lubrication between rigid clusters and surfaces (section `lubrication`; src/coupling).
 struct LubricationSpec {
   bool on = false;
-  double cutoff = 1.0;    // resolved gap h_c, in dp: the film force is added below it
+  double cutoff = 1.5;    // resolved gap h_c, in dp: the film force is added below it
   double min_gap = 0.05;  // smallest gap (surface roughness), in dp
   double viscosity = 0;   // dynamic viscosity of the film (default: the fluid's)
 };

@@ -51,7 +51,6 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     info.shift_speed = b.shift_speed, info.shift_R = b.shift_R, info.shift_n = b.shift_n;
     info.no_slip = b.no_slip;
     info.non_negative_wall_pressure = b.non_negative_wall_pressure;
-    info.monotone_pressure = b.monotone_pressure;
     info.damping = b.damping;
     const Point& bf = b.body_force.empty() ? scene_.body_force : b.body_force;
     for (int a = 0; a < D; ++a) info.body_force[a] = bf[a];

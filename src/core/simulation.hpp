@@ -87,7 +87,6 @@ struct BodyInfo {
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)
   bool no_slip = true;                                 // wall-like body seen by the fluid
   bool non_negative_wall_pressure = false;             // its Adami pressure clipped at 0
-  bool monotone_pressure = false;  // fluid: Thomas-Couchman gradient in the pressure force
   int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls,
                   // -3 rigid)
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)

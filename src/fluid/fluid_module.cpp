@@ -54,13 +54,6 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
     kvprev_ = p.add_field("wall_previous_velocity", D);
   }
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) gb_.push_back(sim.body_force(int(b)));
-  // Thomas & Couchman 1992: below the radius of the steepest kernel slope the pressure force
-  // keeps that slope, so that it does not fade as two particles close (pairing, squeezed gaps).
-  const auto& W = sim.kernel();
-  for (int k = 1; k < 2000; ++k) {
-    const double r = W.radius() * k / 2000.0;
-    if (std::abs(W.dw(r)) > std::abs(dw_peak_)) dw_peak_ = W.dw(r), r_peak_ = r;
-  }
   for (const auto& m : sim.materials()) {
     c0_.push_back(m.sound_speed());
     rho0_.push_back(m.density);
@@ -251,8 +244,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         const bool fj = ph[j] == kFluid;
         // Sun et al. 2017, Eq. 3: -(1/rho_i) sum_j (p_i + p_j) grad W V_j; a wall-like j enters
         // with its extrapolated pressure and its own (geometric) volume (Adami et al. 2012).
-        const bool tc = b.monotone_pressure || (fj && bodies[bd[j]].monotone_pressure);
-        ap -= ((pr[i] + (fj ? pr[j] : pw[j])) * vj) * (tc ? pressure_gradient(pl.f[k], r) : gw);
+        ap -= ((pr[i] + (fj ? pr[j] : pw[j])) * vj) * gw;
         if (fj || bodies[bd[j]].no_slip) {
           // pi_ij = v_ij . r_ij / (r^2 + 0.01 h^2); at a no-slip wall v_j -> 2 v_w - v~_w.
           const Vec<D> vjv = fj ? Vec<D>(v[j]) : Vec<D>(2.0 * v[j] - vw[j]);
@@ -292,8 +284,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         const Vec<D>& r = pl.r[k];
         const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij = -grad_j W_ji
         const double vv = vol[i] * vol[j];
-        f -= ((pr[j] + pw[i]) * vv) *
-             (bodies[bd[j]].monotone_pressure ? pressure_gradient(pl.f[k], r) : gw);
+        f -= ((pr[j] + pw[i]) * vv) * gw;
         if (noslip) {  // minus the viscous force on j: rho0 V_j V_i (pair term of j)
           const Vec<D> viv = 2.0 * v[i] - vw[i];
           f -= rho0_[mt[j]] * vol[j] *

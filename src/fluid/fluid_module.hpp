@@ -37,12 +37,6 @@ class FluidModule : public Module<D> {
   std::vector<Vec<D>> gb_;              // body force per body
   bool any_wall_ = false;
   bool central_ = false;             // central viscous form 2 (d + 2) nu pi_ij instead of Morris
-  double r_peak_ = 0, dw_peak_ = 0;  // radius and value of the steepest kernel slope dW/dr
-  // grad_i W_ij for the pressure force with the Thomas-Couchman slope: dW/dr(r_peak) below r_peak.
-  Vec<D> pressure_gradient(double f, const Vec<D>& r) const {
-    const double rn = r.norm();
-    return rn < r_peak_ && rn > 0 ? Vec<D>((dw_peak_ / rn) * r) : Vec<D>(f * r);
-  }
 };
 
 }  // namespace monosph
