@@ -81,6 +81,9 @@ int run_main(int argc, char** argv) {
   cmd_study->add_option("--metric", study.metric, "reference metric to plot (default: first)");
   cmd_study->add_flag("--plot-value", study.plot_value,
                       "plot the metric's value instead of its relative error (e.g. a disorder)");
+  cmd_study->add_option("--against", study.against,
+                        "plot the metric's value against this --vary key (linear axes, one curve "
+                        "per combination of the other keys), e.g. variables.angle");
   cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")
       ->check(CLI::PositiveNumber);
   cmd_study->add_option("--threads", study.threads, "threads per run (default: cores / jobs)")

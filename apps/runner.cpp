@@ -380,12 +380,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       const bool reached = sim.time() >= needs * (1 - 1e-9);
       nlohmann::json m;
       m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-      m["reference"] = ref.value;
+      m["reference"] =
+          std::isfinite(ref.value) ? nlohmann::json(ref.value) : nlohmann::json(nullptr);
       m["reached"] = reached;
       m["needs_time"] = needs;
-      m["relative_error"] = reached && std::isfinite(value) && ref.value != 0
-                                ? nlohmann::json(std::abs(value - ref.value) / std::abs(ref.value))
-                                : nlohmann::json(nullptr);
+      m["relative_error"] =
+          reached && std::isfinite(value) && std::isfinite(ref.value) && ref.value != 0
+              ? nlohmann::json(std::abs(value - ref.value) / std::abs(ref.value))
+              : nlohmann::json(nullptr);
       js["metrics"][ref.name] = m;
     }
     // Pass criteria: a run that stopped fails all of them.
@@ -431,6 +433,11 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       if (m["value"].is_null()) {
         fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name,
                    ref.probe);
+        continue;
+      }
+      if (m["reference"].is_null()) {
+        fmt::print(stderr, "monosph: {} = {:.6g} (no reference value)\n", ref.name,
+                   m["value"].get<double>());
         continue;
       }
       const double v = m["value"], rv = m["reference"];

@@ -96,6 +96,24 @@ int run_study(const StudyOptions& opt) {
   const Scene base = load_scene_file(opt.scene, opt.overrides);  // bad scene: error now
   std::vector<Axis> axes;
   for (const auto& v : opt.vary) axes.push_back(parse_vary(v));
+  // --against KEY: the metric's value against that varied key, one curve per other combination.
+  int against = -1;
+  if (!opt.against.empty()) {
+    for (std::size_t a = 0; a < axes.size(); ++a)
+      if (axes[a].key == opt.against) against = static_cast<int>(a);
+    if (against < 0)
+      throw InputError("study: --against " + opt.against + " is not one of the --vary keys");
+    for (const auto& v : axes[against].values) {
+      std::size_t used = 0;
+      try {
+        std::stod(v, &used);
+      } catch (const std::exception&) {
+      }
+      if (used != v.size() || v.empty())
+        throw InputError("study: --against " + opt.against + ": value '" + v + "' is not a number");
+    }
+  }
+  const bool plot_value = opt.plot_value || against >= 0;
   std::string metric = opt.metric;
   if (metric.empty() && !base.references.empty()) metric = base.references.front().name;
   if (!metric.empty()) {
@@ -248,14 +266,17 @@ int run_study(const StudyOptions& opt) {
     if (!s.is_object() || s.value("status", std::string()) != "completed" ||
         !s["metrics"].contains(metric))
       continue;
-    const auto& e = s["metrics"][metric][opt.plot_value ? "value" : "relative_error"];
-    if (e.is_null() || !(e.get<double>() > 0)) continue;
+    const auto& e = s["metrics"][metric][plot_value ? "value" : "relative_error"];
+    if (e.is_null() || !(against >= 0 ? std::isfinite(e.get<double>()) : e.get<double>() > 0))
+      continue;
     std::string label;
-    for (std::size_t a = 1; a < axes.size(); ++a)
-      label += (a > 1 ? " " : "") + axes[a].key + "=" + r.values[a];
-    if (label.empty()) label = axes[0].key + " varied";
-    curves[label].push_back({s.value("wall_seconds", 0.0), e.get<double>()});
-    point_label[{label, s.value("wall_seconds", 0.0)}] = axes[0].key + "=" + r.values[0];
+    const std::size_t along = against >= 0 ? static_cast<std::size_t>(against) : 0;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+      if (a != along) label += (label.empty() ? "" : " ") + axes[a].key + "=" + r.values[a];
+    if (label.empty()) label = axes[along].key + " varied";
+    const double x = against >= 0 ? std::stod(r.values[along]) : s.value("wall_seconds", 0.0);
+    curves[label].push_back({x, e.get<double>()});
+    point_label[{label, x}] = axes[along].key + "=" + r.values[along];
   }
   {
     std::ofstream dat(out / "study.dat");
@@ -269,16 +290,24 @@ int run_study(const StudyOptions& opt) {
   }
   {
     std::ofstream gp(out / "study.gp");
-    gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
-       << "set logscale xy\n"
-       << "set xlabel 'wall time [s]'\nset ylabel '" << (opt.plot_value ? "" : "relative error of ")
-       << metric << "'\n"
-       << "set title '" << base.name << ": " << (opt.plot_value ? metric : "error")
-       << " against run time'\nset key outside\n"
-       << "set grid\nplot for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
-       << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1), \\\n"
-       << "     for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
-       << "] 'study.dat' index i using 1:2:3 with labels offset 1,0.7 notitle\n";
+    if (against >= 0)  // linear axes: the value against the varied key
+      gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
+         << "set xlabel '" << opt.against << "'\nset ylabel '" << metric << "'\n"
+         << "set title '" << base.name << ": " << metric << " against " << opt.against
+         << "'\nset key outside\nset grid\nset yrange [0:*]\nplot for [i=0:"
+         << (curves.empty() ? 0 : curves.size() - 1)
+         << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1)\n";
+    else
+      gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
+         << "set logscale xy\n"
+         << "set xlabel 'wall time [s]'\nset ylabel '" << (plot_value ? "" : "relative error of ")
+         << metric << "'\n"
+         << "set title '" << base.name << ": " << (plot_value ? metric : "error")
+         << " against run time'\nset key outside\n"
+         << "set grid\nplot for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
+         << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1), \\\n"
+         << "     for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
+         << "] 'study.dat' index i using 1:2:3 with labels offset 1,0.7 notitle\n";
   }
   if (curves.empty()) {
     fmt::print("study: no run measured {}: no plot (study.csv, study.md)\n", metric);

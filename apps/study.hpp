@@ -14,6 +14,7 @@ struct StudyOptions {
   int jobs = 1;                        // runs at once (separate processes)
   int threads = 0;                     // threads per run (0: the cores / jobs)
   bool plot_value = false;             // plot the metric's value, not its relative error
+  std::string against;  // a --vary key: plot the metric's value against it (linear axes)
 };
 
 // Returns the exit code: 0 when every run completed, 3 when some stopped, 2 on bad input.

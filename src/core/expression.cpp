@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene_reader.hpp"
 #include "types.hpp"
 
 namespace monosph {
@@ -16,7 +17,8 @@ struct Expression::Impl {
   std::string text;
 };
 
-Expression::Expression(const std::string& text, const std::string& where)
+Expression::Expression(const std::string& text, const std::string& where,
+                       const Constants& constants)
     : impl_(std::make_unique<Impl>()) {
   auto& p = impl_->parser;
   impl_->text = text;
@@ -27,11 +29,19 @@ Expression::Expression(const std::string& text, const std::string& where)
     p.DefineVar("y", &impl_->y);
     p.DefineVar("z", &impl_->z);
     p.DefineVar("t", &impl_->t);
+    for (const auto& [name, value] : constants) p.DefineConst(name, value);
     p.SetExpr(text);
     p.Eval();  // forces parsing; reports syntax errors now
     impl_->uses_t = p.GetUsedVar().count("t") > 0;
   } catch (mu::Parser::exception_type& e) {
-    throw InputError(where + ": invalid expression '" + text + "': " + e.GetMsg());
+    std::string hint;
+    if (!constants.empty() && !e.GetToken().empty()) {
+      std::vector<std::string> names;
+      for (const auto& c : constants) names.push_back(c.first);
+      const std::string best = closest_word(e.GetToken(), names);
+      if (!best.empty()) hint = "; did you mean '" + best + "'?";
+    }
+    throw InputError(where + ": invalid expression '" + text + "': " + e.GetMsg() + hint);
   }
 }
 

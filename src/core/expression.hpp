@@ -1,15 +1,21 @@
 #pragma once
-// A user expression in x, y, z and t (muparser), e.g. "1000*(1+1e-3*cos(2*pi*x/0.1))".
+// A user expression in x, y, z and t (muparser), e.g. "1000*(1+1e-3*cos(2*pi*x/0.1))", plus
+// named constants (the scene's `variables`, e.g. "speed*cos(angle*pi/180)").
+#include <map>
 #include <memory>
 #include <string>
 
 namespace monosph {
 
+// Named constants an expression may use besides x, y, z, t, pi and e.
+using Constants = std::map<std::string, double>;
+
 class Expression {
  public:
   Expression();
-  // Throws InputError "<where>: invalid expression '<text>': <reason>".
-  Expression(const std::string& text, const std::string& where);
+  // Throws InputError "<where>: invalid expression '<text>': <reason>" (an unknown name near one
+  // of the constants adds "did you mean '<constant>'?").
+  Expression(const std::string& text, const std::string& where, const Constants& constants = {});
   Expression(const Expression&) = delete;
   Expression& operator=(const Expression&) = delete;
   Expression(Expression&&) noexcept;

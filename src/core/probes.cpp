@@ -129,7 +129,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
     if (s.type == "disorder" && !p.has("disorder"))
       throw InputError(where +
                        ".type: 'disorder' needs a solid body (the solid module computes it)");
-    if (!s.weight_expr.empty()) it->weight = Expression(s.weight_expr, where + ".weight");
+    if (!s.weight_expr.empty())
+      it->weight = Expression(s.weight_expr, where + ".weight", sim.scene().variables);
     if (s.type == "tracked") {  // the particle nearest to the point now, followed by its id
       double best = std::numeric_limits<double>::infinity();
       auto x = p.x();

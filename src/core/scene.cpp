@@ -5,11 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "expression.hpp"
 #include "scene_probes.hpp"
 #include "scene_reader.hpp"
+#include "scene_variables.hpp"
 
 namespace monosph {
 
@@ -60,11 +62,12 @@ namespace {
 const std::vector<std::string> kModules = {"solid",    "rigid",   "fluid",
                                            "clusters", "contact", "lubrication"};
 
-void check_expression(const std::string& text, const std::string& path) {
-  Expression e(text, path);
+void check_expression(const std::string& text, const std::string& path, const Constants& vars) {
+  Expression e(text, path, vars);
 }
 
-std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim) {
+std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim,
+                                     const Constants& vars) {
   auto n = r.node(key);
   if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
     scene_error(r.at(key), "expected a list of " + std::to_string(dim) + " expressions");
@@ -72,7 +75,7 @@ std::vector<std::string> expressions(MapReader& r, const std::string& key, int d
   for (int a = 0; a < dim; ++a) {
     std::string p = r.at(key) + "[" + std::to_string(a) + "]";
     out.push_back(as_text(n[a], p));
-    check_expression(out.back(), p);
+    check_expression(out.back(), p, vars);
   }
   return out;
 }
@@ -183,7 +186,7 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
 // A rigid surface (MMB Sect. 3; built by src/rigid): one geometry key, motion, contact parameters.
 // `folder` resolves a relative STL path (the scene file's folder; empty: the working directory).
 SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim,
-                         const std::filesystem::path& folder) {
+                         const std::filesystem::path& folder, const Constants& vars) {
   MapReader r(node, index_path);
   SurfaceSpec s;
   s.name = r.text("name");
@@ -201,7 +204,7 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   s.translate =
       q.has("translate") ? q.vector("translate", dim) : (q.optional("translate"), Point(dim, 0.0));
   if (q.has("velocity"))
-    s.velocity_expr = expressions(q, "velocity", dim);
+    s.velocity_expr = expressions(q, "velocity", dim, vars);
   else
     s.velocity_expr.assign(dim, "0"), q.optional("velocity");
   const std::vector<std::string> kinds2 = {"box", "plane", "segment", "polyline", "polygon"};
@@ -496,7 +499,10 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     } catch (const YAML::Exception&) {  // malformed: reported below, unless --set replaces it
     }
   }
-  for (const auto& o : overrides) apply_override(root, o);
+  for (const auto& o : overrides) {
+    check_variable_override(root, o);  // scene_variables.cpp: a typo in a variable name fails
+    apply_override(root, o);
+  }
   Scene s;
   {
     YAML::Emitter out;
@@ -510,6 +516,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   if (s.dimension != 2 && s.dimension != 3)
     scene_error("dimension", "must be 2 or 3, got " + std::to_string(s.dimension));
   const int dim = s.dimension;
+  s.variables = read_variables(r);  // before every expression that may use them
   s.dp = r.positive("dp");
 
   if (r.has("kernel")) {
@@ -630,11 +637,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         MapReader in(b.node("initial"), p + ".initial");
         body.density_expr = in.text("density", "");
         body.temperature = in.positive("temperature", 0.0 + body.temperature);
-        if (!body.density_expr.empty()) check_expression(body.density_expr, in.at("density"));
+        if (!body.density_expr.empty())
+          check_expression(body.density_expr, in.at("density"), s.variables);
         if (in.has("velocity") && in.has("velocity_profile"))
           scene_error(in.path(), "give either velocity or velocity_profile, not both");
         if (in.has("velocity"))
-          body.velocity_expr = expressions(in, "velocity", dim);
+          body.velocity_expr = expressions(in, "velocity", dim, s.variables);
         else
           in.optional("velocity");
         if (in.has("velocity_profile"))
@@ -886,7 +894,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
         for (int a = 0; a < dim; ++a) {
           std::string q = b.at("velocity") + "[" + std::to_string(a) + "]";
           bc.velocity_expr.push_back(as_text(n[a], q));
-          if (bc.velocity_expr.back() != "free") check_expression(bc.velocity_expr.back(), q);
+          if (bc.velocity_expr.back() != "free")
+            check_expression(bc.velocity_expr.back(), q, s.variables);
         }
         if (std::all_of(bc.velocity_expr.begin(), bc.velocity_expr.end(),
                         [](const std::string& e) { return e == "free"; }))
@@ -908,7 +917,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
                                              : std::filesystem::path();
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string p = "surfaces[" + std::to_string(i) + "]";
-      s.surfaces.push_back(read_surface(list[i], p, dim, folder));
+      s.surfaces.push_back(read_surface(list[i], p, dim, folder, s.variables));
       for (std::size_t j = 0; j < i; ++j)
         if (s.surfaces[j].name == s.surfaces[i].name)
           scene_error(p + " (" + s.surfaces[i].name + ").name", "duplicate surface name");
@@ -1012,7 +1021,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
       MapReader q(refs[i], p);
       ReferenceSpec rs;
       rs.name = q.text("name");
-      rs.value = q.number("value");
+      // No value: a measured figure without reference (a study's value, e.g. removed mass).
+      rs.value = q.number("value", std::numeric_limits<double>::quiet_NaN());
       rs.probe = q.text("probe");
       rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max",
                                         "min", "mean", "peak_ratio"});

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "expression.hpp"
 #include "kernel.hpp"
 
 namespace monosph {
@@ -173,8 +174,8 @@ struct ProbeSpec {
 
 struct ReferenceSpec {
   std::string name, probe, measure;  // measure: frequency | period | final | max | min | mean
-  double value = 0;
-  double start = 0;  // ignore probe samples before this time
+  double value = 0;                  // NaN: no reference value (the measure is reported, no error)
+  double start = 0;                  // ignore probe samples before this time
   // Simulated time the measure needs (key needs_time). Default: a window measure (final, max,
   // min, mean) needs the scene's end time as written; a frequency, period or peak ratio only
   // needs `start` (it is measurable, or not, from the samples after it).
@@ -229,6 +230,7 @@ struct Scene {
   std::vector<ProbeSpec> probes;
   std::vector<ReferenceSpec> references;
   std::vector<CheckSpec> checks;
+  Constants variables;    // section `variables`: names every expression of the scene can use
   int reorder_every = 1;  // particles re-sorted in cell order every N neighbour builds
 
   double h() const { return h_factor * dp; }

@@ -111,13 +111,13 @@ void read_profile(MapReader& q, ProbeSpec& ps, int dim) {
 }
 
 // `weight` multiplies the integrand of integral, mean and kinetic_energy; others reject it.
-void read_weight(MapReader& q, ProbeSpec& ps) {
+void read_weight(MapReader& q, ProbeSpec& ps, const Scene& s) {
   if (!q.has("weight")) return void(q.optional("weight"));
   if (!is_one_of(ps.type, {"integral", "mean", "kinetic_energy"}))
     scene_error(q.at("weight"), "only integral, mean and kinetic_energy probes take a weight ('" +
                                     ps.type + "' would ignore it)");
   ps.weight_expr = q.text("weight");
-  Expression check(ps.weight_expr, q.at("weight"));
+  Expression check(ps.weight_expr, q.at("weight"), s.variables);
 }
 
 void check_surface(const std::string& p, const ProbeSpec& ps, const Scene& s) {
@@ -164,7 +164,7 @@ ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& 
     read_field(q, p, ps, dim);
   else
     q.optional("field");
-  read_weight(q, ps);
+  read_weight(q, ps, s);
   const bool on_surface =
       is_one_of(ps.type, {"surface_force", "surface_contacts", "surface_displacement"});
   if (on_surface && q.has("surface")) {  // the surface's name (`body` is accepted too)

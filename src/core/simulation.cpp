@@ -79,7 +79,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
           ex.emplace_back();
         else
           ex.emplace_back(bc.velocity_expr[a],
-                          "boundary_conditions[" + std::to_string(k) + "].velocity");
+                          "boundary_conditions[" + std::to_string(k) + "].velocity",
+                          scene_.variables);
       bc_velocity_.push_back(std::move(ex));
     }
     reactions_.assign(scene_.boundaries.size(), V::Zero());
@@ -238,9 +239,10 @@ void Simulation<D>::fill_bodies() {
     const Material& mat = scene_.materials[body.material];
     Expression rho_ex, vel_ex[3];
     if (!body.density_expr.empty())
-      rho_ex = Expression(body.density_expr, body.name + ".initial.density");
+      rho_ex = Expression(body.density_expr, body.name + ".initial.density", scene_.variables);
     for (std::size_t a = 0; a < body.velocity_expr.size(); ++a)
-      vel_ex[a] = Expression(body.velocity_expr[a], body.name + ".initial.velocity");
+      vel_ex[a] =
+          Expression(body.velocity_expr[a], body.name + ".initial.velocity", scene_.variables);
     std::size_t first = p_.append(pts.size());
     auto x = p_.x();
     auto v = p_.v();

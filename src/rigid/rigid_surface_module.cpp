@@ -20,7 +20,7 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
     s.friction = spec.friction;
     s.damping = spec.damping;
     for (int a = 0; a < D; ++a) {
-      s.velocity_expr.emplace_back(spec.velocity_expr[a], where + ".velocity");
+      s.velocity_expr.emplace_back(spec.velocity_expr[a], where + ".velocity", scene.variables);
       s.constant = s.constant && !s.velocity_expr.back().depends_on_time();
     }
     s.v0 = velocity_at(s, 0.0);

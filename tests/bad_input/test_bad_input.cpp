@@ -44,6 +44,7 @@ const Case kCases[] = {
      "damage grows with plastic strain: give `plasticity` too, or `damage: none`"},
     {"profile_zero_bins.yaml", "probes.list[0].bins: must be at least 1, got 0"},
     {"rigid_probe_not_rigid.yaml", "probes.list[0].body: 'block' is not a rigid body"},
+    {"unknown_variable.yaml", "bodies[0] (block).initial.velocity[0]: invalid expression 'sped'"},
     {"weight_ignored.yaml",
      "probes.list[0].weight: only integral, mean and kinetic_energy probes take a weight"},
 };
@@ -90,6 +91,17 @@ TEST(BadInput, UnknownSetKey) {
                        " --set time_stp.cfl=0.2 --quiet --out " + out_dir("bad"));
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("time_stp: unknown key"), std::string::npos) << r.output;
+}
+
+TEST(BadInput, SetOfAnUndeclaredVariable) {
+  auto r = run_monosph("run " + source("cases/erosion_map/scene.yaml") +
+                       " --set variables.angel=45 --quiet --out " + out_dir("bad"));
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--set variables.angel: the scene declares no variable 'angel' "
+                          "(variables: angle, speed); did you mean 'angle'?"),
+            std::string::npos)
+      << r.output;
+  EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
 
 TEST(BadInput, MissingRestartFile) {
