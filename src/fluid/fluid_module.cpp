@@ -222,11 +222,16 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
   // one conserves angular momentum and is used with rigid clusters (central_).
   auto nu_of = [&](std::size_t i) { return 2.0 * nu_[mt[i]]; };
   auto alpha_of = [&](std::size_t i) { return bodies[bd[i]].av_alpha * h * c0_[mt[i]]; };
-  // Both viscous terms of pair (i, j) with the velocity vj of j, as an acceleration factor.
-  auto viscous = [&](double nu, double al, double vol_j, double f, const Vec<D>& r,
+  // Monaghan's quadratic term (Monaghan 1992 Eq. 4.2, beta mu_ij^2 with mu_ij = h v_ij.r_ij /
+  // (r^2 + 0.01 h^2)), on closing pairs only: negligible at flow speeds << c0, it keeps fast
+  // jets from passing through each other (artificial_viscosity.beta of a fluid body).
+  auto beta_of = [&](std::size_t i) { return bodies[bd[i]].av_beta * h * h; };
+  // The viscous terms of pair (i, j) with the velocity vj of j, as an acceleration factor.
+  auto viscous = [&](double nu, double al, double be, double vol_j, double f, const Vec<D>& r,
                      const Vec<D>& vij) {
-    const double r2 = r.squaredNorm(), q = 1.0 / (r2 + eta2);
-    return Vec<D>(vol_j * f * (nu * r2 * q * vij + (al * vij.dot(r) * q) * r));
+    const double r2 = r.squaredNorm(), q = 1.0 / (r2 + eta2), vr = vij.dot(r);
+    if (vr < 0) al -= be * vr * q;
+    return Vec<D>(vol_j * f * (nu * r2 * q * vij + (al * vr * q) * r));
   };
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
@@ -251,7 +256,8 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
           double nu = fj ? 0.5 * (nui + nu_of(j)) : nui;
           double al = fj ? 0.5 * (ali + alpha_of(j)) : ali;
           if (central_) al += (D + 2) * nu, nu = 0;  // 2 (d + 2) nu pi_ij (Sun 2017)
-          av += viscous(nu, al, vj, pl.f[k], r, v[i] - vjv);
+          const double be = fj ? 0.5 * (beta_of(i) + beta_of(j)) : beta_of(i);
+          av += viscous(nu, al, be, vj, pl.f[k], r, v[i] - vjv);
         }
         if (b.shift_speed > 0) {
           const double q = pl.w[k] / wdp, q2 = q * q;  // (W/W(dp))^n; n = 4 without pow
@@ -289,8 +295,9 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
           const Vec<D> viv = 2.0 * v[i] - vw[i];
           f -= rho0_[mt[j]] * vol[j] *
                (central_
-                    ? viscous(0.0, alpha_of(j) + (D + 2) * nu_of(j), vol[i], pl.f[k], r, v[j] - viv)
-                    : viscous(nu_of(j), alpha_of(j), vol[i], pl.f[k], r, v[j] - viv));
+                    ? viscous(0.0, alpha_of(j) + (D + 2) * nu_of(j), beta_of(j), vol[i], pl.f[k], r,
+                              v[j] - viv)
+                    : viscous(nu_of(j), alpha_of(j), beta_of(j), vol[i], pl.f[k], r, v[j] - viv));
         }
       }
       ff[i] = f;
