@@ -1,7 +1,7 @@
 // The abrasive-flow-machining scene (cases/abrasive_flow_machining) at dp = 1 um: fluid, PMMA and
-// grains together stay stable, the first grain hits the roughness, nothing penetrates, the PMMA
-// comes to rest after the impacts, and a restart from a checkpoint (rigid-cluster state
-// included) reproduces the uninterrupted run bit for bit.
+// grains together stay stable, the grains abrade the roughness, nothing penetrates, the PMMA
+// comes to rest after the impacts, slow grains stay elastic, and a restart from a checkpoint
+// (rigid-cluster state included) reproduces the uninterrupted run bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,30 +19,47 @@ const std::string kCoarse =
 
 }  // namespace
 
-TEST(AbrasiveFlow, CoarseRunHitsTheRoughnessWithoutPenetration) {
+TEST(AbrasiveFlow, CoarseRunAbradesTheRoughnessWithoutPenetration) {
+  // Grains launched at 50 m/s (the scene's launch_speed) through water: they reach the
+  // roughness, the PMMA yields and fails, and failed surface particles are removed.
   const std::string out = out_dir("afm_coarse");
   auto r = run_monosph("run " + source("cases/abrasive_flow_machining/scene.yaml") + " --out " +
                        out + " --quiet" + kCoarse + " output.every=1");
   ASSERT_EQ(r.code, 0) << r.output;
   auto t = read_csv(out + "/probes.csv");
   const double dp = 1e-6;
-  EXPECT_GE(t["grain_impacts"].back(), 1);  // the grain in front of the roughness hits it
+  EXPECT_GE(t["grain_impacts"].back(), 1);
+  EXPECT_GT(t["removed_mass"].back(), 0.0);  // measured 3.6e-9 kg/m (2 particles of 1 um)
   EXPECT_LT(max_of(t["grain_penetration"]), 0.5 * dp);
   EXPECT_LT(max_of(t["fluid_penetration"]), 0.5 * dp);
   EXPECT_LT(max_of(t["disorder"]), 0.05);  // with hourglass control (dp units)
   EXPECT_GT(min_of(t["min_distance"]), 0.3);
-  // The drive keeps the flow going: the mean fluid speed starts at the Poiseuille mean 20/3 m/s
-  // and stays within 25 % of it up to 2 us (at dp = 0.5 um it falls to 5.6 m/s by 2 us: the
-  // roughness and the grains slow the smooth-channel profile).
-  for (std::size_t k = 0; k < t["time"].size(); ++k)
-    if (t["time"][k] <= 2e-6) {
-      EXPECT_NEAR(t["fluid_mean_u"][k], 20.0 / 3.0, 20.0 / 3.0 * 0.25);
-    }
+  const auto& m = t["fluid_mass"];
+  EXPECT_NEAR(m.back(), m.front(), 1e-12 * m.front());  // the fluid keeps every particle
   // Once the impacts are over the PMMA comes to rest: with the corrected stress divergence its
-  // kinetic energy at 3.5 us is 0.8 % of the peak; with MMB's normalised form it grows again
-  // (41 % of a peak reached at the end, 5x the impact peak).
+  // kinetic energy at 3.5 us is a small part of the impact peak; with MMB's normalised form it
+  // grew again (41 % of a peak reached at the end at 5 m/s, README).
   const auto& ke = t["pmma_kinetic_energy"];
   EXPECT_LT(ke.back(), 0.05 * max_of(ke)) << ke.back() << " " << max_of(ke);
+}
+
+TEST(AbrasiveFlow, SlowGrainsStayElasticAndTheDriveKeepsTheFlow) {
+  // Grains at 5 m/s (the scene before Step 10): the impacts stay elastic, as the erosion map
+  // says (PMMA removal starts near 50 m/s at a corner), and the drive keeps the channel flow:
+  // the mean fluid speed starts at the Poiseuille mean 20/3 m/s and stays within 25 % of it up
+  // to 2 us (the roughness and the grains slow the smooth-channel profile). At 50 m/s the
+  // grains carry momentum worth 24 m/s of the fluid's mass, and this bound does not apply.
+  const std::string out = out_dir("afm_slow");
+  auto r =
+      run_monosph("run " + source("cases/abrasive_flow_machining/scene.yaml") + " --out " + out +
+                  " --quiet" + kCoarse + " output.every=1 variables.launch_speed=5 end_time=2e-6");
+  ASSERT_EQ(r.code, 0) << r.output;
+  auto t = read_csv(out + "/probes.csv");
+  EXPECT_GE(t["grain_impacts"].back(), 1);
+  EXPECT_EQ(t["removed_mass"].back(), 0.0);
+  EXPECT_EQ(max_of(t["max_damage"]), 0.0);
+  for (std::size_t k = 0; k < t["time"].size(); ++k)
+    EXPECT_NEAR(t["fluid_mean_u"][k], 20.0 / 3.0, 20.0 / 3.0 * 0.25);
 }
 
 TEST(AbrasiveFlow, RestartEqualsUninterruptedRun) {
