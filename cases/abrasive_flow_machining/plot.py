@@ -4,9 +4,11 @@
 usage: plot.py OUT.png RUN_WITH_CONTROL RUN_WITHOUT_CONTROL
 Each RUN is an output folder of `monosph run` (VTU frames, probes.csv). Top: the last frame with
 hourglass control, bottom: without (solid grey, grains light blue, fluid dark blue; solid
-particles coloured by the disorder measure). Right: disorder, removed mass and grain impacts against time.
+particles coloured by the disorder measure). Middle: disorder, removed mass and grain impacts against time. Right: the roughness outline
+(height against x) at the start and the end.
 Needs python3-vtk9 and python3-matplotlib (Debian)."""
 import csv
+import json
 import glob
 import os
 import sys
@@ -22,12 +24,12 @@ except ImportError as e:
     sys.exit(f"plot.py: {e} (apt-get install python3-vtk9 python3-matplotlib)")
 
 
-def last_frame(run):
+def frame(run, which=-1):
     files = sorted(glob.glob(os.path.join(run, "*_[0-9]*.vtu")))
     if not files:
         sys.exit(f"plot.py: no VTU frames in {run}")
     r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(files[-1])
+    r.SetFileName(files[which])
     r.Update()
     g = r.GetOutput()
     d = {"x": vtk_to_numpy(g.GetPoints().GetData())}
@@ -37,6 +39,14 @@ def last_frame(run):
     t = g.GetFieldData().GetArray("TimeValue")
     d["time"] = t.GetValue(0) if t else float("nan")
     return d
+
+
+def outline(d, dp=0.5):
+    """Top of the PMMA (highest solid particle + dp/2) in columns of width dp, x in um."""
+    x = d["x"][d["phase"] == 1] * 1e6
+    cols = np.floor(x[:, 0] / dp).astype(int)
+    xs = np.unique(cols)
+    return (xs + 0.5) * dp, np.array([x[cols == c, 1].max() + dp / 2 for c in xs])
 
 
 def probes(run):
@@ -50,9 +60,9 @@ def main():
         sys.exit(__doc__)
     out, runs = sys.argv[1], sys.argv[2:]
     labels = ["with hourglass control", "without hourglass control"]
-    fig = plt.figure(figsize=(14, 7.5))
-    gs = fig.add_gridspec(2, 2, width_ratios=[2.2, 1])
-    frames = [last_frame(run) for run in runs]
+    fig = plt.figure(figsize=(19, 7.5))
+    gs = fig.add_gridspec(2, 3, width_ratios=[2.2, 1, 1])
+    frames = [frame(run) for run in runs]
     # One grey scale for both maps, up to the largest disorder of their solids.
     vmax = max(max(d.get("disorder", np.zeros(1))[d["phase"] == 1].max(), 1e-6) for d in frames)
     for k, d in enumerate(frames):
@@ -84,6 +94,21 @@ def main():
     ax2.set_ylabel("removed PMMA mass [mg per m depth]")
     ax3.set_ylabel("grain impacts (dashed)")
     ax3.legend(loc="lower right")
+    # The roughness outline (height against x) at the start and the end of each run.
+    for k, run in enumerate(runs):
+        ax = fig.add_subplot(gs[k, 2])
+        with open(os.path.join(run, "summary.json")) as f:
+            dp = json.load(f)["dp"] * 1e6
+        for d, style, when in ((frame(run, 0), "k:", "start"), (frames[k], "r-", "end")):
+            xo, yo = outline(d, dp)
+            ax.step(xo, yo, style, where="mid", label=f"{when}, t = {d['time'] * 1e6:.2f} us")
+        ax.set_xlim(20, 40)
+        ax.set_ylim(-1, 6.5)
+        ax.set_xlabel("x [um]")
+        ax.set_ylabel("top of the PMMA [um]")
+        ax.set_title(f"roughness outline, {labels[k]}")
+        ax.grid(True)
+        ax.legend(loc="lower center")
     for a in (ax1, ax2):
         a.set_xlabel("t [us]")
         a.grid(True)

@@ -24,7 +24,7 @@ TEST(AbrasiveFlow, CoarseRunAbradesTheRoughnessWithoutPenetration) {
   // roughness, the PMMA yields and fails, and failed surface particles are removed.
   const std::string out = out_dir("afm_coarse");
   auto r = run_monosph("run " + source("cases/abrasive_flow_machining/scene.yaml") + " --out " +
-                       out + " --quiet" + kCoarse + " output.every=1");
+                       out + " --quiet" + kCoarse + " output.every=1 end_time=3.5e-6");
   ASSERT_EQ(r.code, 0) << r.output;
   auto t = read_csv(out + "/probes.csv");
   const double dp = 1e-6;

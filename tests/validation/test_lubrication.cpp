@@ -30,29 +30,30 @@ TEST(Lubrication, CylinderApproachingAWallFollowsTheStokesDrag) {
   ASSERT_EQ(r.code, 0) << r.output;
   auto t = read_csv(out + "/probes.csv");
   const double a = 1e-3, dp = 1e-4, mu = 5e-3, U = 1e-3;
-  double resolved = 0, below = 0, sph_only = 0;
+  // Measured (docs/theory.md): 1.03-1.11 resolved; 0.77-0.95 in the transition, where the SPH
+  // fluid already falls below the drag and the film term has not started (h_c = 1.5 dp);
+  // 0.96-1.04 below 1.3 dp, where the SPH fluid alone gives 0.14-0.79.
+  double below = 0, sph_only = 0;
   int n_resolved = 0, n_below = 0;
   for (std::size_t k = 0; k < t["time"].size(); ++k) {
     const double h = t["c_y"][k] - a, exact = stokes_drag(h, a, mu, U);
     const double sph = t["fluid_force_y"][k], total = sph + t["lubrication_y"][k];
     if (h >= 0.25 * a && h <= 0.6 * a) {  // resolved (2.5-6 dp): the SPH fluid alone
       EXPECT_EQ(t["lubrication_y"][k], 0.0);
-      EXPECT_NEAR(total / exact, 1.0, 0.2) << "h/a = " << h / a;
-      resolved += total / exact, ++n_resolved;
-    }
-    if (h > 0 && h <= 0.15 * a) {  // below 1.5 dp: SPH + the sub-grid film
-      EXPECT_NEAR(total / exact, 1.0, 0.2) << "h/a = " << h / a;
+      EXPECT_NEAR(total / exact, 1.0, 0.15) << "h/a = " << h / a;
+      ++n_resolved;
+    } else if (h > 0.13 * a && h < 0.25 * a) {  // the transition
+      EXPECT_NEAR(total / exact, 1.0, 0.3) << "h/a = " << h / a;
+    } else if (h > 0 && h <= 0.13 * a) {  // 0.2-1.3 dp: SPH + the sub-grid film
+      EXPECT_NEAR(total / exact, 1.0, 0.1) << "h/a = " << h / a;
       below += total / exact, ++n_below;
       if (h <= 1.0 * dp) sph_only = std::max(sph_only, sph / exact);
     }
   }
   ASSERT_GT(n_resolved, 30);
   ASSERT_GT(n_below, 10);
-  // Measured: 1.07 and 0.99 on average (README); the SPH fluid alone gives at most 0.67 of the
-  // drag once h <= 1 dp: the sub-grid term is what carries the film there.
-  EXPECT_NEAR(resolved / n_resolved, 1.0, 0.1);
-  EXPECT_NEAR(below / n_below, 1.0, 0.1);
-  EXPECT_LT(sph_only, 0.75);
+  EXPECT_NEAR(below / n_below, 1.0, 0.05);
+  EXPECT_LT(sph_only, 0.75);  // measured 0.67: without the film term the test fails
   EXPECT_GT(min_of(t["min_distance"]), 0.3);
 }
 
