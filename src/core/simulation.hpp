@@ -21,6 +21,13 @@ template <int D>
 class Simulation;
 
 // Physics comes as modules; a time step calls each enabled module in every pass.
+// Column suffixes _x, _y (, _z) of a vector probe (Module::probe_columns).
+inline std::vector<std::string> axis_columns(int dim) {
+  std::vector<std::string> c;
+  for (int a = 0; a < dim; ++a) c.push_back(std::string("_") + "xyz"[a]);
+  return c;
+}
+
 template <int D>
 class Module {
  public:

@@ -195,10 +195,7 @@ template <int D>
 std::vector<std::string> LubricationModule<D>::probe_columns(const ProbeSpec& s) const {
   if (s.type == "lubrication_gap") return {""};
   if (s.type != "lubrication_force") return {};
-  std::vector<std::string> c;
-  const char* ax = "xyz";
-  for (int k = 0; k < D; ++k) c.push_back(std::string("_") + ax[k]);
-  return c;
+  return axis_columns(D);
 }
 
 template <int D>

@@ -349,10 +349,7 @@ double FluidModule<D>::max_dt(Simulation<D>& sim) {
 template <int D>
 std::vector<std::string> FluidModule<D>::probe_columns(const ProbeSpec& s) const {
   if (s.type != "fluid_force") return {};
-  std::vector<std::string> c;
-  const char* ax = "xyz";
-  for (int a = 0; a < D; ++a) c.push_back(std::string("_") + ax[a]);
-  return c;
+  return axis_columns(D);
 }
 
 template <int D>

@@ -36,7 +36,7 @@ class FluidModule : public Module<D> {
   std::vector<double> c0_, rho0_, nu_;  // per material
   std::vector<Vec<D>> gb_;              // body force per body
   bool any_wall_ = false;
-  bool central_ = false;             // central viscous form 2 (d + 2) nu pi_ij instead of Morris
+  bool central_ = false;  // central viscous form 2 (d + 2) nu pi_ij instead of Morris
 };
 
 }  // namespace monosph
