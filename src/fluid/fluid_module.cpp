@@ -222,9 +222,9 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
   // one conserves angular momentum and is used with rigid clusters (central_).
   auto nu_of = [&](std::size_t i) { return 2.0 * nu_[mt[i]]; };
   auto alpha_of = [&](std::size_t i) { return bodies[bd[i]].av_alpha * h * c0_[mt[i]]; };
-  // Monaghan's quadratic term (Monaghan 1992 Eq. 4.2, beta mu_ij^2 with mu_ij = h v_ij.r_ij /
-  // (r^2 + 0.01 h^2)), on closing pairs only: negligible at flow speeds << c0, it keeps fast
-  // jets from passing through each other (artificial_viscosity.beta of a fluid body).
+  // Monaghan's quadratic term (Monaghan 1992; the beta term of MMB Eq. 17-18: beta mu_ij^2, mu_ij =
+  // h v_ij.r_ij / (r^2 + 0.01 h^2)), on closing pairs only: negligible at flow speeds << c0, it
+  // keeps fast jets from passing through each other (artificial_viscosity.beta of a fluid body).
   auto beta_of = [&](std::size_t i) { return bodies[bd[i]].av_beta * h * h; };
   // The viscous terms of pair (i, j) with the velocity vj of j, as an acceleration factor.
   auto viscous = [&](double nu, double al, double be, double vol_j, double f, const Vec<D>& r,
