@@ -1,5 +1,6 @@
 #include "lubrication_module.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -131,6 +132,8 @@ void LubricationModule<D>::forces(Simulation<D>& sim) {
   total_.setZero();
   if (film_.empty()) return;
   find_films(sim);
+  // Most steps no grain is within h_c of a surface: no pass over the particles then.
+  if (std::none_of(film_.begin(), film_.end(), [](const Film& f) { return f.force > 0; })) return;
   auto& p = sim.particles();
   const auto& pl = sim.pairs();
   auto ph = p.phase();
