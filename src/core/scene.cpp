@@ -936,6 +936,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     s.contact.law = c.choice("law", {"hertz", "lennard_jones"}, "hertz");
     s.contact.distance = c.positive("distance", 1.0);
     s.contact.damping = c.non_negative("damping", 0.0);
+    s.contact.friction = c.non_negative("friction", 0.0);
     if (s.contact.law == "lennard_jones") {
       s.contact.strength = c.positive("strength");
       s.contact.p1 = c.positive("p1", 12.0);

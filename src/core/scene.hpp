@@ -121,6 +121,7 @@ struct ContactSpec {
   std::string law = "hertz";  // hertz | lennard_jones
   double distance = 1.0;      // contact diameter, fraction of dp
   double damping = 0;         // hertz: normal dashpot, ratio of critical
+  double friction = 0;        // Coulomb coefficient of the pair's sliding
   double strength = 0;        // lennard_jones: D (m^2/s^2)
   double p1 = 12, p2 = 4;     // lennard_jones exponents
 };

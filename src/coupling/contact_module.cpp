@@ -28,6 +28,22 @@ bool contact_pair(std::int64_t pi, std::int64_t pj, std::int64_t cluster_i,
   return (pi == kSolid || pi == kWall) && pj == kRigid;
 }
 
+// Coulomb friction on particle i of a pair in contact: -min(mu F_n, m* |v_t|/dt) v_t/|v_t| with
+// the relative tangential velocity v_t of i against j (Cundall & Strack 1979, regularised as the
+// rigid surfaces, src/rigid/surface.cpp: it never more than stops the sliding of the pair in one
+// step). j gets the opposite force: momentum is exact; the pair's torque goes into the clusters'
+// rotation (particles carry no spin).
+template <int D>
+Vec<D> friction(const Vec<D>& v_ij, const Vec<D>& n, double f_n, double mu, double m_star,
+                double dt) {
+  const Vec<D> vt = v_ij - v_ij.dot(n) * n;
+  const double s = vt.norm();
+  if (!(s > 0) || !(f_n > 0)) return Vec<D>::Zero();
+  double f_t = mu * f_n;
+  if (dt > 0) f_t = std::min(f_t, m_star * s / dt);
+  return (-f_t / s) * vt;
+}
+
 }  // namespace
 
 template <int D>
@@ -107,7 +123,8 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   touch_.resize(n);
   near_.resize(n);
   const bool hertz = hertz_;
-  const double dc = dc_, release = 1.1 * dc_, zeta = spec_.damping;
+  const double dc = dc_, release = 1.1 * dc_, zeta = spec_.damping, mu = spec_.friction;
+  const double dt = sim.dt();
   const double delta_floor = 0.05 * dc_;  // stiffness for the step at >= 0.1 R overlap
   long npairs = 0;
   double w2 = 0, worst = 0;
@@ -149,6 +166,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
         fn = std::max(0.0, fn - 2 * zeta * std::sqrt(kn * ms) * (v[i] - v[j]).dot(nrm));
       }
       f += fn * nrm;
+      if (mu > 0) f += friction<D>(v[i] - v[j], nrm, fn, mu, m[i] * m[j] / (m[i] + m[j]), dt);
       if (i < own) {
         worst = std::max(worst, dc - r);
         if (id[i] < id[j]) ++npairs;  // each pair once, on any number of ranks

@@ -8,7 +8,8 @@
 //    1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j from the two materials (Johnson 1985, Eq. 4.23),
 //    optionally with a normal dashpot (ratio of critical);
 //  - lennard_jones: F = m_ij D [(d_c/r)^p1 - (d_c/r)^p2] / r (Monaghan 1994, JCP 110:399) with
-//    the pair mass m_ij = 2 m_i m_j/(m_i + m_j), so that the pair force is antisymmetric.
+//    the pair mass m_ij = 2 m_i m_j/(m_i + m_j), so that the pair force is antisymmetric;
+//  - either law: Coulomb friction mu F_n against the pair's sliding (`friction`, default 0).
 // 2D forces are per metre of depth: the 3D point force is divided by t_z = dp (equations.md Sect.
 // 0). Each particle sums its own side of every pair: exactly opposite forces, momentum conserved to
 // round-off. Contact pairs take no part in any SPH sum. Probes: grain_impacts (clusters that came
