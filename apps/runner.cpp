@@ -15,9 +15,11 @@
 #include "core/checkpoint.hpp"
 #include "core/memory.hpp"
 #include "core/output_vtk.hpp"
+#include "core/probe_csv.hpp"
 #include "core/probes.hpp"
 #include "core/scene.hpp"
 #include "core/simulation.hpp"
+#include "output_folder.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,8 +29,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// SIGINT / SIGTERM: the run finishes its step, writes its last frame and summary (status
-// "interrupted") and exits with 128 + the signal. SA_RESETHAND: a second signal stops at once.
+// SIGINT / SIGTERM / SIGUSR1 (which mpirun forwards to the ranks at once): the run finishes its
+// step, writes its last frame, checkpoint.h5, the probes and summary.json (status "interrupted")
+// and exits with 128 + the signal. SA_RESETHAND: a second signal stops at once.
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void on_signal(int sig) {
   g_signal = sig;
@@ -43,15 +46,17 @@ class SignalGuard {
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int_);
     sigaction(SIGTERM, &sa, &old_term_);
+    sigaction(SIGUSR1, &sa, &old_usr1_);
   }
   ~SignalGuard() {
     sigaction(SIGINT, &old_int_, nullptr);
     sigaction(SIGTERM, &old_term_, nullptr);
+    sigaction(SIGUSR1, &old_usr1_, nullptr);
   }
 
  private:
   struct sigaction old_int_ {
-  }, old_term_{};
+  }, old_term_{}, old_usr1_{};
 };
 
 std::string hms(double s) {
@@ -95,28 +100,30 @@ class Progress {
   Clock::time_point start_, last_{};
 };
 
-// Reads the probe CSV back (columns: time, step, probes...) for the reference metrics.
-void read_csv(const fs::path& file, std::vector<std::string>& head,
-              std::vector<std::vector<double>>& cols) {
-  std::ifstream in(file);
-  std::string line;
-  if (!std::getline(in, line)) return;
-  head.clear();
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
-  cols.assign(head.size(), {});
-  while (std::getline(in, line)) {
-    std::stringstream ls(line);
-    std::size_t k = 0;
-    for (std::string c; std::getline(ls, c, ',') && k < cols.size(); ++k)
-      cols[k].push_back(std::stod(c));
+// probes.csv: a new file, or on a restart the rows the checkpoint counted (from the folder's file,
+// else from the one next to the checkpoint) with the new rows after them.
+void open_probe_csv(ProbeCsv& csv, const fs::path& file, const std::vector<std::string>& columns,
+                    const CheckpointMeta* restart, const std::string& restart_file) {
+  if (!restart) return csv.create(file, columns);
+  long rows = -1;  // a checkpoint of an earlier version: the rows up to its time
+  if (auto it = restart->scalars.find("probe_rows"); it != restart->scalars.end()) {
+    if (!(it->second >= 0 && it->second < 1e15 && it->second == std::floor(it->second)))
+      throw InputError("checkpoint: probe_rows is not a row count");
+    rows = static_cast<long>(it->second);
   }
+  csv.resume(file, fs::path(restart_file).parent_path() / "probes.csv", columns, rows,
+             restart->time);
 }
 
 template <int D>
 RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* restart_meta) {
   RunResult res;
   const fs::path out = opt.out.empty() ? fs::path("out") / scene.name : fs::path(opt.out);
+  SignalGuard signals;  // from the start: a signal during the set-up stops after the first step
+  // Locked before anything is read or written there (and cleared of an earlier run's results).
+  std::unique_ptr<OutputFolder> folder;
+  if (opt.write_output)
+    folder = std::make_unique<OutputFolder>(out, restart_meta != nullptr, Comm::world());
   Simulation<D> sim(scene);
   assemble_modules(sim);
   double next_output = 0, next_probe = 0, next_ckpt = scene.checkpoint_every;
@@ -149,6 +156,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     }
   }
   Probes<D> probes(sim);
+  if (restart_meta) probes.load_state(restart_meta->scalars);  // the same tracked particles
   const Comm& comm = sim.comm();
   const bool root = comm.root();  // rank 0 writes the series, probes and summary (MPI)
   std::error_code ec;
@@ -170,47 +178,18 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     if (restart_meta) vtk->restore_frames(sim.time());
   }
   const fs::path csv_path = out / "probes.csv";
-  std::ofstream csv;
-  if (opt.write_output && root) {
-    if (restart_meta) {
-      // Keep the rows before the restart time, then append.
-      std::vector<std::string> head;
-      std::vector<std::vector<double>> cols;
-      read_csv(csv_path, head, cols);
-      csv.open(csv_path);
-      csv << "time,step";
-      for (const auto& c : probes.columns()) csv << "," << c;
-      csv << "\n";
-      if (!cols.empty() && head.size() == probes.columns().size() + 2)
-        for (std::size_t r = 0; r < cols[0].size(); ++r) {
-          if (cols[0][r] > sim.time() + 1e-300) break;
-          for (std::size_t k = 0; k < cols.size(); ++k)
-            csv << (k ? "," : "") << fmt::format("{:.17g}", cols[k][r]);
-          csv << "\n";
-        }
-    } else {
-      csv.open(csv_path);
-      csv << "time,step";
-      for (const auto& c : probes.columns()) csv << "," << c;
-      csv << "\n";
-    }
-    if (!csv) throw InputError("output: cannot write " + csv_path.string());
-  }
+  ProbeCsv csv(comm);
+  if (opt.write_output) open_probe_csv(csv, csv_path, probes.columns(), restart_meta, opt.restart);
   if (opt.write_output) probes.open_profiles(out, restart_meta != nullptr, sim.time());
-  auto last_flush = Clock::now();
   auto sample = [&] {
     if (!opt.write_output) return;
     sim.diagnostics();
-    auto row = probes.sample(sim);
-    if (!root) return;
-    csv << fmt::format("{:.17g},{}", sim.time(), sim.step());
-    for (double v : row) csv << fmt::format(",{:.17g}", v);
-    csv << "\n";
-    // Flush about once a second so that a user can follow the probes during the run.
-    if (Clock::now() - last_flush > std::chrono::seconds(1)) csv.flush(), last_flush = Clock::now();
+    csv.row(sim.time(), sim.step(), probes.sample(sim));
   };
-  long rebuilt_step = -1;
+  long rebuilt_step = -1, ckpt_step = -1;
   auto checkpoint = [&](const fs::path& file) {
+    ckpt_step = sim.step();
+    csv.flush();  // the rows the checkpoint counts are in the file
     // The restarted run starts from the same list (bit-identical). Only once per step: a second
     // rebuild at the same positions still moves the solids' reference state by round-off (the
     // final checkpoint right after a periodic one).
@@ -225,6 +204,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     meta.scalars["next_probe"] = next_probe;
     meta.scalars["next_checkpoint"] = next_ckpt;
     meta.scalars["reference_end_time"] = scene.reference_end_time;
+    meta.scalars["probe_rows"] = static_cast<double>(csv.rows());
+    probes.save_state(meta.scalars);
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
     write_checkpoint<D>(file, p, sim.owned(), meta, comm);
   };
@@ -242,7 +223,6 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     sample();
     next_probe = scene.probe_every;
   }
-  SignalGuard signals;
   Progress progress(opt.quiet || !root, sim.time(), scene.end_time);
   progress.start_steps(sim.step());
   std::string status = "completed";
@@ -304,6 +284,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   res.pass_seconds = sim.pass_seconds();
   if (!opt.write_output) return res;
   if (res.exit_code == 0) checkpoint(out / "final.h5");
+  // An interrupted run continues from its last state: checkpoint.h5 (restart from it).
+  if (status == "interrupted" && ckpt_step != sim.step()) checkpoint(out / "checkpoint.h5");
   csv.close();
   // MPI figures (collective: before rank 0 goes on alone).
   const auto* dec = sim.decomposition();
@@ -358,7 +340,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   {
     std::vector<std::string> head;
     std::vector<std::vector<double>> cols;
-    read_csv(csv_path, head, cols);
+    read_probe_table(csv_path, head, cols);
     // The column of a probe (a vector probe: its x component, or the component named "load_y").
     auto column = [&](const std::string& probe) -> const std::vector<double>* {
       auto spec = std::find_if(scene.probes.begin(), scene.probes.end(),

@@ -63,6 +63,7 @@ std::vector<long> piece_sizes(const std::vector<double>& xyz, int dim, double li
 template <int D>
 struct Probes<D>::Item {
   ProbeSpec spec;
+  std::size_t index = 0;  // in the scene's list
   int field = -1, body = -1, bc = -1, target = -1;
   std::int64_t id = -1;  // tracked particle
   Expression weight;
@@ -77,6 +78,7 @@ Probes<D>::Probes(Simulation<D>& sim) {
     const ProbeSpec& s = sim.scene().probes[k];
     auto it = std::make_unique<Item>();
     it->spec = s;
+    it->index = k;
     const std::string where = "probes.list[" + std::to_string(k) + "]";
     if (!s.field.empty()) {
       it->field = p.find(s.field);
@@ -160,6 +162,27 @@ Probes<D>::~Probes() = default;
 template <int D>
 void Probes<D>::open_profiles(const std::filesystem::path& dir, bool restarted, double time) {
   for (auto& pr : profiles_) pr->open(dir, restarted, time);
+}
+
+template <int D>
+void Probes<D>::save_state(std::map<std::string, double>& s) const {
+  for (const auto& it : items_)
+    if (it->spec.type == "tracked")
+      s["probes." + std::to_string(it->index) + ".tracked_id"] = static_cast<double>(it->id);
+}
+
+template <int D>
+void Probes<D>::load_state(const std::map<std::string, double>& s) {
+  for (auto& it : items_) {
+    if (it->spec.type != "tracked") continue;
+    const std::string key = "probes." + std::to_string(it->index) + ".tracked_id";
+    auto f = s.find(key);
+    if (f == s.end()) continue;  // an older checkpoint: the particle nearest to the point now
+    const double id = f->second;
+    if (!(id >= 0 && id < 9.0e15 && id == std::floor(id)))
+      throw InputError("checkpoint: " + key + " is not a particle id");
+    it->id = static_cast<std::int64_t>(id);
+  }
 }
 
 template <int D>

@@ -2,6 +2,7 @@
 // Probes: scalar time series sampled from the particles (CSV), and the metrics a scene's
 // reference values are compared with (frequency, period, final, max, min, mean).
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ class Probes {
   void open_profiles(const std::filesystem::path& dir, bool restarted, double time);
   // The last sample of the profile probe `name` (std::out_of_range when there is none).
   const ProfileBins& profile(const std::string& name) const;
+  // Checkpoint state: the particle id each `tracked` probe follows (probes.<k>.tracked_id, k its
+  // index in the list), so that a restart follows the same particles.
+  void save_state(std::map<std::string, double>& s) const;
+  void load_state(const std::map<std::string, double>& s);
 
  private:
   struct Item;

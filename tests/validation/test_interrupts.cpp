@@ -1,0 +1,226 @@
+// Runs that stop and continue: SIGINT / SIGTERM / SIGUSR1 (last frame, checkpoint.h5, probes and
+// summary.json "interrupted", exit 128 + signal), SIGKILL, and restarts from checkpoint.h5 that
+// equal the uninterrupted run (final.h5 and probes.csv bit for bit); probes.csv of another run
+// refused; tracked probes after a restart; the lock on the output folder.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstring>
+
+#include "../output_files.hpp"
+#include "child_process.hpp"
+#include "run_helpers.hpp"
+
+namespace monosph::test {
+namespace {
+
+// A 2D acoustic wave of 200 particles: 2080 steps, a checkpoint every 52 steps.
+const std::string kScene = source("cases/acoustic_wave/scene.yaml");
+const std::string kOpts =
+    " --threads 1 --quiet --set dp=0.005 end_time=0.2 output.checkpoint_every=0.005"
+    " output.every=0.01";
+
+std::string log_of(const std::string& dir) {
+  return dir + ".log";
+}
+
+// Starts `cmd`, waits for dir/checkpoint.h5 and calls send(child); returns the exit code. A run
+// that ended before the signal (the test was not scheduled for the whole run) starts again.
+template <class Send>
+int interrupt_run(const std::string& cmd, const std::string& dir, Send send) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    std::filesystem::remove_all(dir);
+    Child c = start_child(cmd, log_of(dir));
+    if (!wait_for_file(c, dir + "/checkpoint.h5")) {
+      wait_exit(c);
+      ADD_FAILURE() << "no checkpoint.h5: " << file_text(log_of(dir));
+      return -1;
+    }
+    if (!reap(c)) send(c);
+    const int code = wait_exit(c);
+    if (code != 0) return code;
+  }
+  ADD_FAILURE() << "the run ended before the signal three times";
+  return -1;
+}
+
+std::string last_line(const std::string& text) {
+  if (text.empty() || text.back() != '\n') return "(no final newline)";
+  const auto start = text.rfind('\n', text.size() - 2);
+  return text.substr(start == std::string::npos ? 0 : start + 1);
+}
+
+// The state a SIGINT / SIGTERM / SIGUSR1 leaves: exit 128 + sig, the last step in the summary
+// (interrupted), in checkpoint.h5, as the last frame and as the last row of probes.csv.
+void expect_interrupted_state(const std::string& dir, int sig, int code) {
+  EXPECT_EQ(code, 128 + sig) << file_text(log_of(dir));
+  auto js = summary(dir);
+  EXPECT_EQ(js["status"], "interrupted");
+  const long steps = js["steps"];
+  Particles<2> p;
+  auto meta = read_checkpoint<2>(dir + "/checkpoint.h5", p);
+  EXPECT_EQ(meta.step, steps) << "checkpoint.h5 is not the last state";
+  auto frames = read_pvd(dir + "/acoustic_wave.pvd");
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames.back().time, js["simulated_time"].get<double>());
+  const std::string row = last_line(file_text(dir + "/probes.csv"));
+  EXPECT_EQ(row.substr(0, row.find(',', row.find(',') + 1) + 1),
+            fmt::format("{:.17g},{},", meta.time, steps));
+}
+
+TEST(Interrupts, RestartAfterSigintSigtermSigusr1SigkillEqualsUninterruptedRun) {
+  const std::string full = out_dir("interrupt_full");
+  auto r = run_monosph("run " + kScene + " --out " + full + kOpts);
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (int sig : {SIGINT, SIGTERM, SIGUSR1, SIGKILL}) {
+    SCOPED_TRACE(strsignal(sig));
+    const std::string dir = out_dir("interrupt_" + std::to_string(sig));
+    const int code =
+        interrupt_run(std::string(MONOSPH_BIN) + " run " + kScene + " --out " + dir + kOpts, dir,
+                      [&](Child& c) { kill(c.pid, sig); });
+    if (sig == SIGKILL) {
+      EXPECT_EQ(code, 128 + SIGKILL);
+      EXPECT_FALSE(std::filesystem::exists(dir + "/summary.json"));
+    } else {
+      expect_interrupted_state(dir, sig, code);
+    }
+    auto b = run_monosph("run --restart " + dir + "/checkpoint.h5 --out " + dir +
+                         " --threads 1 --quiet");
+    ASSERT_EQ(b.code, 0) << b.output;
+    EXPECT_EQ(summary(dir)["status"], "completed");
+    expect_same_checkpoint(full + "/final.h5", dir + "/final.h5");
+    EXPECT_EQ(file_text(dir + "/probes.csv"), file_text(full + "/probes.csv"));
+  }
+}
+
+// A run to 0.02 s with checkpoints at 0.01 and 0.02: checkpoint.h5 counts 105 probe rows.
+std::string checkpointed_run(const std::string& name) {
+  const std::string dir = out_dir(name);
+  auto r = run_monosph("run " + kScene + " --out " + dir +
+                       " --threads 1 --quiet --set dp=0.005 end_time=0.02"
+                       " output.checkpoint_every=0.01");
+  EXPECT_EQ(r.code, 0) << r.output;
+  return dir;
+}
+
+std::size_t lines(const std::string& s) {
+  return std::count(s.begin(), s.end(), '\n');
+}
+
+TEST(Interrupts, RestartRefusesAProbeCsvThatIsNotThisRunsWithOneLine) {
+  const std::string dir = checkpointed_run("probe_csv_bad");
+  const std::string csv = dir + "/probes.csv", text = file_text(csv);
+  auto nth = [&](int n) {  // byte offset of line n (1: the header)
+    std::size_t pos = 0;
+    for (int k = 1; k < n; ++k) pos = text.find('\n', pos) + 1;
+    return pos;
+  };
+  auto restart = [&](const std::string& content) {
+    std::ofstream(csv, std::ios::binary | std::ios::trunc) << content;
+    return run_monosph("run --restart " + dir + "/final.h5 --out " + dir + " --threads 1 --quiet");
+  };
+  struct Bad {
+    std::string content, message;
+  };
+  const std::vector<Bad> bad = {
+      {text.substr(0, nth(4)) + "0.001,abc,1" + text.substr(text.find('\n', nth(4))),
+       "probes.csv: line 4 is malformed"},
+      {text.substr(0, nth(4)) + "6.97e+228,8.2e-312\n" + text.substr(nth(5)),
+       "probes.csv: line 4 is malformed"},
+      {text.substr(0, nth(30)), "probes.csv: 28 complete rows, the checkpoint counted"},
+      {text.substr(0, nth(30) + 7), "probes.csv: 28 complete rows, the checkpoint counted"},
+      {"time,step,other\n" + text.substr(nth(2)), "probes.csv: its header is not this run's"},
+      {"", "probes.csv: its header is not this run's"},
+  };
+  for (const auto& b : bad) {
+    auto r = restart(b.content);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_EQ(lines(r.output), 1u) << r.output;
+    EXPECT_NE(r.output.find(b.message), std::string::npos) << r.output;
+  }
+  // Rows after the checkpoint and a partly written last row (a run killed) are dropped; a
+  // restart into a new folder takes the rows from the checkpoint's folder.
+  std::ofstream(csv, std::ios::binary | std::ios::trunc) << text;
+  const std::string moved = out_dir("probe_csv_other");
+  auto c = run_monosph("run --restart " + dir + "/checkpoint.h5 --out " + moved +
+                       " --threads 1 --quiet --set end_time=0.03");
+  ASSERT_EQ(c.code, 0) << c.output;
+  std::ofstream(csv, std::ios::binary | std::ios::trunc)
+      << text << "0.0201,106,0.00012,3.4e-07,1.0000000000000002,1e-19,2e-19,0.0"
+      << "\n0.02";
+  auto d = run_monosph("run --restart " + dir + "/checkpoint.h5 --out " + dir +
+                       " --threads 1 --quiet --set end_time=0.03");
+  ASSERT_EQ(d.code, 0) << d.output;
+  EXPECT_EQ(file_text(csv), file_text(moved + "/probes.csv"));
+  EXPECT_EQ(file_text(csv).substr(0, text.size()), text);
+  EXPECT_GT(file_text(csv).size(), text.size());
+}
+
+TEST(Interrupts, TrackedProbeFollowsTheSameParticleAfterARestart) {
+  // The oscillating plate's tip moves about 3 dp in 0.01 s: the particle nearest to the point at
+  // the restart is another one. The tracked id is part of the checkpoint.
+  const std::string scene = source("cases/oscillating_plate/scene.yaml");
+  const std::string full = out_dir("tracked_full"), half = out_dir("tracked_half");
+  const std::string opts = " --threads 1 --quiet --set dp=0.004 output.every=1";
+  auto f = run_monosph("run " + scene + " --out " + full + opts +
+                       " end_time=0.02 output.checkpoint_every=0.01");
+  ASSERT_EQ(f.code, 0) << f.output;
+  auto a = run_monosph("run " + scene + " --out " + half + opts +
+                       " end_time=0.01 output.checkpoint_every=0.01");
+  ASSERT_EQ(a.code, 0) << a.output;
+  auto b = run_monosph("run --restart " + half + "/final.h5 --out " + half +
+                       " --threads 1 --quiet --set end_time=0.02");
+  ASSERT_EQ(b.code, 0) << b.output;
+  auto tf = read_csv(full + "/probes.csv"), th = read_csv(half + "/probes.csv");
+  EXPECT_EQ(th["tip_y"], tf["tip_y"]);
+  EXPECT_EQ(file_text(half + "/probes.csv"), file_text(full + "/probes.csv"));
+  expect_same_checkpoint(full + "/final.h5", half + "/final.h5");
+}
+
+TEST(OutputFolder, ASecondRunIntoTheFolderStopsWithOneLineAStaleLockDoesNot) {
+  const std::string dir = out_dir("lock_busy");
+  const std::string run = std::string(MONOSPH_BIN) + " run " + kScene + " --out " + dir;
+  Child a = start_child(run +
+                            " --threads 1 --quiet --set dp=0.005 end_time=100"
+                            " output.checkpoint_every=0.005 output.every=0.01",
+                        log_of(dir));
+  ASSERT_TRUE(wait_for_file(a, dir + "/checkpoint.h5")) << file_text(log_of(dir));
+  const std::string in_use = "is in use by another run (pid " + std::to_string(a.pid) + ")";
+  for (const std::string& second :
+       {run + kOpts, std::string(MONOSPH_BIN) + " run --restart " + dir + "/checkpoint.h5 --out " +
+                         dir + " --threads 1 --quiet"}) {
+    auto r = run_command(second + " 2>&1");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_EQ(lines(r.output), 1u) << r.output;
+    EXPECT_NE(r.output.find(in_use), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(reap(a)) << "the first run stopped: " << file_text(log_of(dir));
+  // The first run goes on undisturbed; killed, its lock goes with it.
+  kill(a.pid, SIGKILL);
+  EXPECT_EQ(wait_exit(a), 128 + SIGKILL);
+  auto c = run_command(run + " --threads 1 --quiet --set dp=0.005 end_time=0.01 2>&1");
+  EXPECT_EQ(c.code, 0) << c.output;
+  EXPECT_EQ(summary(dir)["status"], "completed");
+}
+
+TEST(OutputFolder, ANewRunRemovesTheResultsOfTheEarlierOne) {
+  // A completed run leaves summary.json (completed) and final.h5; a new run into the folder that
+  // is killed must not leave them claiming a result.
+  const std::string dir = out_dir("lock_stale");
+  const std::string run = std::string(MONOSPH_BIN) + " run " + kScene + " --out " + dir +
+                          " --threads 1 --quiet --set dp=0.005 output.checkpoint_every=";
+  auto a = run_command(run + "0 end_time=0.01 2>&1");
+  ASSERT_EQ(a.code, 0) << a.output;
+  ASSERT_EQ(summary(dir)["status"], "completed");
+  Child b = start_child(run + "0.005 end_time=100", log_of(dir));
+  ASSERT_TRUE(wait_for_file(b, dir + "/checkpoint.h5")) << file_text(log_of(dir));
+  kill(b.pid, SIGKILL);
+  EXPECT_EQ(wait_exit(b), 128 + SIGKILL);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/summary.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/final.h5"));
+}
+
+}  // namespace
+}  // namespace monosph::test
