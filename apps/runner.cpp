@@ -308,6 +308,12 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   }
   // Largest resident set of any rank (collective).
   const long peak_memory = comm.max(static_cast<long>(peak_resident_bytes()));
+  // Rank 0 writes the summary alone; the others wait for it (however it ends), so that none exits
+  // before it is written: a rank's non-zero exit (an interrupt) makes mpirun kill the job.
+  struct WaitForRoot {
+    const Comm& c;
+    ~WaitForRoot() { c.barrier(); }
+  } wait_for_root{comm};
   if (!root) return res;
 
   nlohmann::json js;

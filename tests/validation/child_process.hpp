@@ -7,12 +7,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "../output_files.hpp"
 
 namespace monosph::test {
 
@@ -101,6 +104,46 @@ inline bool alive(pid_t pid) {
   if (!std::getline(in, stat)) return false;
   const auto close = stat.rfind(')');
   return close != std::string::npos && close + 2 < stat.size() && stat[close + 2] != 'Z';
+}
+
+inline std::string log_of(const std::string& dir) {
+  return dir + ".log";
+}
+
+// Starts `cmd`, waits for dir/checkpoint.h5 and calls send(child); returns the exit code. A run
+// that ended before the signal (the test was not scheduled for the whole run) starts again.
+template <class Send>
+int interrupt_run(const std::string& cmd, const std::string& dir, Send send) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    std::filesystem::remove_all(dir);
+    Child c = start_child(cmd, log_of(dir));
+    if (!wait_for_file(c, dir + "/checkpoint.h5")) {
+      wait_exit(c);
+      ADD_FAILURE() << "no checkpoint.h5: " << file_text(log_of(dir));
+      return -1;
+    }
+    if (!reap(c)) send(c);
+    const int code = wait_exit(c);
+    if (code != 0) return code;
+  }
+  ADD_FAILURE() << "the run ended before the signal three times";
+  return -1;
+}
+
+inline std::string last_line(const std::string& text) {
+  if (text.empty() || text.back() != '\n') return "(no final newline)";
+  const auto start = text.rfind('\n', text.size() - 2);
+  return text.substr(start == std::string::npos ? 0 : start + 1);
+}
+
+// Two files equal byte for byte, else the line where they first differ.
+inline void expect_same_file(const std::string& a, const std::string& b) {
+  const std::string ta = file_text(a), tb = file_text(b);
+  if (ta == tb) return;
+  std::size_t k = 0;
+  while (k < ta.size() && k < tb.size() && ta[k] == tb[k]) ++k;
+  ADD_FAILURE() << a << " (" << ta.size() << " bytes) and " << b << " (" << tb.size()
+                << " bytes) differ from line " << std::count(ta.begin(), ta.begin() + k, '\n') + 1;
 }
 
 }  // namespace monosph::test

@@ -9,7 +9,6 @@
 #include <csignal>
 #include <cstring>
 
-#include "../output_files.hpp"
 #include "child_process.hpp"
 #include "run_helpers.hpp"
 
@@ -21,36 +20,6 @@ const std::string kScene = source("cases/acoustic_wave/scene.yaml");
 const std::string kOpts =
     " --threads 1 --quiet --set dp=0.005 end_time=0.2 output.checkpoint_every=0.005"
     " output.every=0.01";
-
-std::string log_of(const std::string& dir) {
-  return dir + ".log";
-}
-
-// Starts `cmd`, waits for dir/checkpoint.h5 and calls send(child); returns the exit code. A run
-// that ended before the signal (the test was not scheduled for the whole run) starts again.
-template <class Send>
-int interrupt_run(const std::string& cmd, const std::string& dir, Send send) {
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    std::filesystem::remove_all(dir);
-    Child c = start_child(cmd, log_of(dir));
-    if (!wait_for_file(c, dir + "/checkpoint.h5")) {
-      wait_exit(c);
-      ADD_FAILURE() << "no checkpoint.h5: " << file_text(log_of(dir));
-      return -1;
-    }
-    if (!reap(c)) send(c);
-    const int code = wait_exit(c);
-    if (code != 0) return code;
-  }
-  ADD_FAILURE() << "the run ended before the signal three times";
-  return -1;
-}
-
-std::string last_line(const std::string& text) {
-  if (text.empty() || text.back() != '\n') return "(no final newline)";
-  const auto start = text.rfind('\n', text.size() - 2);
-  return text.substr(start == std::string::npos ? 0 : start + 1);
-}
 
 // The state a SIGINT / SIGTERM / SIGUSR1 leaves: exit 128 + sig, the last step in the summary
 // (interrupted), in checkpoint.h5, as the last frame and as the last row of probes.csv.
@@ -91,7 +60,7 @@ TEST(Interrupts, RestartAfterSigintSigtermSigusr1SigkillEqualsUninterruptedRun) 
     ASSERT_EQ(b.code, 0) << b.output;
     EXPECT_EQ(summary(dir)["status"], "completed");
     expect_same_checkpoint(full + "/final.h5", dir + "/final.h5");
-    EXPECT_EQ(file_text(dir + "/probes.csv"), file_text(full + "/probes.csv"));
+    expect_same_file(full + "/probes.csv", dir + "/probes.csv");
   }
 }
 
@@ -153,7 +122,7 @@ TEST(Interrupts, RestartRefusesAProbeCsvThatIsNotThisRunsWithOneLine) {
   auto d = run_monosph("run --restart " + dir + "/checkpoint.h5 --out " + dir +
                        " --threads 1 --quiet --set end_time=0.03");
   ASSERT_EQ(d.code, 0) << d.output;
-  EXPECT_EQ(file_text(csv), file_text(moved + "/probes.csv"));
+  expect_same_file(moved + "/probes.csv", csv);
   EXPECT_EQ(file_text(csv).substr(0, text.size()), text);
   EXPECT_GT(file_text(csv).size(), text.size());
 }
@@ -175,7 +144,7 @@ TEST(Interrupts, TrackedProbeFollowsTheSameParticleAfterARestart) {
   ASSERT_EQ(b.code, 0) << b.output;
   auto tf = read_csv(full + "/probes.csv"), th = read_csv(half + "/probes.csv");
   EXPECT_EQ(th["tip_y"], tf["tip_y"]);
-  EXPECT_EQ(file_text(half + "/probes.csv"), file_text(full + "/probes.csv"));
+  expect_same_file(full + "/probes.csv", half + "/probes.csv");
   expect_same_checkpoint(full + "/final.h5", half + "/final.h5");
 }
 
