@@ -115,6 +115,20 @@ void open_probe_csv(ProbeCsv& csv, const fs::path& file, const std::vector<std::
              restart->time);
 }
 
+// The profile probes' files (rank 0 opens them; an error stops every rank).
+template <int D>
+void open_profiles(Probes<D>& probes, const fs::path& out, bool restart, double time,
+                   const Comm& comm) {
+  std::string err;
+  try {
+    probes.open_profiles(out, restart, time);
+  } catch (const InputError& e) {
+    err = e.what();
+  }
+  err = comm.first_message(err);
+  if (!err.empty()) throw InputError(err);
+}
+
 template <int D>
 RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* restart_meta) {
   RunResult res;
@@ -180,7 +194,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   const fs::path csv_path = out / "probes.csv";
   ProbeCsv csv(comm);
   if (opt.write_output) open_probe_csv(csv, csv_path, probes.columns(), restart_meta, opt.restart);
-  if (opt.write_output) probes.open_profiles(out, restart_meta != nullptr, sim.time());
+  if (opt.write_output) open_profiles(probes, out, restart_meta != nullptr, sim.time(), comm);
   auto sample = [&] {
     if (!opt.write_output) return;
     sim.diagnostics();

@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "probe_csv.hpp"
+
 namespace monosph {
 
 namespace {
@@ -92,25 +94,23 @@ template <int D>
 void ProfileProbe<D>::open(const std::filesystem::path& dir, bool restarted, double time) {
   if (!Comm::world().root()) return;
   path_ = dir / ("profile_" + spec_.name + ".csv");
-  std::vector<std::string> kept;  // restart: the rows up to the restart time
-  if (restarted) {
-    std::ifstream in(path_);
-    std::string line;
-    std::getline(in, line);  // header
-    while (std::getline(in, line)) {
-      std::istringstream ls(line);
-      std::string t;
-      if (!std::getline(ls, t, ',')) continue;
-      try {
-        if (std::stod(t) <= time + 1e-300) kept.push_back(line);
-      } catch (const std::exception&) {
-        // a partly written last line of a stopped run
-      }
-    }
+  const std::string header = "time,step,position,mean,particles";
+  std::error_code ec;
+  if (restarted && std::filesystem::exists(path_, ec)) {
+    // The complete rows up to the restart time (not a partly written last one), kept in place.
+    std::ifstream in(path_, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    long kept = 0;
+    const std::size_t keep =
+        probe_csv_prefix(text.str(), header, 5, -1, time, path_.string(), kept);
+    std::filesystem::resize_file(path_, keep, ec);
+    if (ec) throw InputError("output: cannot write " + path_.string() + ": " + ec.message());
+    out_.open(path_, std::ios::app);
+  } else {
+    out_.open(path_);
+    out_ << header << "\n";
   }
-  out_.open(path_);
-  out_ << "time,step,position,mean,particles\n";
-  for (const auto& l : kept) out_ << l << "\n";
   out_.flush();
   if (!out_) throw InputError("output: cannot write " + path_.string());
 }

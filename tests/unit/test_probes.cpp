@@ -297,7 +297,9 @@ TEST(ProfileProbe, WritesLongFormatCsvAndKeepsRowsUpToTheRestartTime) {
   EXPECT_EQ(empty[3] + "," + empty[4], "nan,0");  // the empty bin
   EXPECT_NEAR(std::stod(empty[2]), 0.55, 1e-15);
   EXPECT_EQ(lines[7].substr(0, 6), "0.5,7,");
-  // A restart at t = 0.5 keeps the rows of t <= 0.5 and appends after them.
+  // A restart at t = 0.5 keeps the rows of t <= 0.5 and appends after them; a partly written
+  // last row ("0.5" of a row at t = 0.55 of a killed run) is dropped.
+  std::ofstream(dir / "profile_u.csv", std::ios::app) << "0.5";
   {
     Probes<2> probes(*sim);
     probes.open_profiles(dir, true, 0.5);
