@@ -11,9 +11,11 @@
 //  - removal growing as v^n with n in [2, 3]: Finnie's cutting model n = 2, measured 2.3-2.5 for
 //    metals (ANSYS CFX erosion model, after Tabakoff and Finnie), Hutchings' critical-strain model
 //    n = 3.
-// The enabled test checks what the code meets at 10 across: the angle and the normal fraction at
-// 300 m/s, and n >= 2. The upper bound n <= 3 and the shape at 100-200 m/s are not met at 10 or
-// 20 across (docs/studies/erosion_map/README.md): they are kept in the DISABLED_ test below.
+// Grain contact has Coulomb friction 0.3 (the scene). The enabled test checks what the code meets
+// at 10 across, 150-300 m/s: the angle of the maximum at each speed, the speed exponent of the
+// angle sum, and the normal fraction at 300 m/s. 100 m/s removes 0-3 particles at this dp
+// (quantised), and normal <= 0.5 of the maximum at 200 m/s and the per-angle exponents are not met
+// (docs/studies/erosion_map/README.md): they are kept in the DISABLED_ test below.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,25 +76,21 @@ double exponent(const std::vector<std::pair<double, double>>& pts) {
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-// 300 m/s at 15, 30, 45, 60 and 90 deg and 150 m/s at 30 deg: 6 runs, 82 s on one thread
-// (measured 2026-12-02, the other core busy).
-// Measured (README, dp = 10 um): 300 m/s: 1.62e-5 / 1.68e-5 / 1.60e-5 / 7.0e-6 / 4.48e-6 kg/m
-// (58 / 60 / 57 / 25 / 16 target particles): maximum at 30 deg, normal/maximum 0.27; 30 deg:
-// 1.12e-6 kg/m at 150 m/s, exponent 3.9 (>= 2 met; <= 3 not, see the DISABLED_ test). At dp = 5 um
-// (not run here) the 300 m/s maximum is at 15 deg, normal/maximum 0.25, 30 deg exponent 3.6.
-// The margin of the angle check is small: 30 deg is 2 particles above 15 deg and 3 above 45 deg.
-// Without hourglass control the maximum is at 90 deg (docs/studies/erosion_map/al_no_hourglass),
-// so the check fails.
-TEST(ErosionMap, MaximumAtAShallowAngleAndNormalImpactAboutAThird) {
+// 15, 30, 45, 60 and 90 deg at 150, 200 and 300 m/s: 15 runs, about 5 min on one thread.
+// Measured (docs/studies/erosion_map/al_friction, dp = 10 um), removed target particles at 15 / 30
+// / 45 / 60 / 90 deg: 150 m/s 5 / 10 / 6 / 3 / 2, 200 m/s 12 / 14 / 9 / 9 / 12, 300 m/s 24 / 52 /
+// 23 / 17 / 20: maximum at 30 deg at each speed, normal/maximum 0.38 at 300 m/s; speed exponent of
+// the sum 2.39 over 150-300 m/s (2.70 with 100 m/s). Without friction (al_hourglass) the maximum
+// was at 30/45/60 (tied), 45 and 30 deg and the exponent 3.6 over 150-300 m/s. Without hourglass
+// control runs stop with pairing particles (al_friction_no_hourglass): the test fails.
+TEST(ErosionMap, MaximumAtAShallowAngleAndSpeedExponentBetweenTwoAndThree) {
   const std::string out = out_dir("erosion_map");
-  const auto m = study(out, "15,30,45,60,90", "300", 5);
-  const auto slow = study(out_dir("erosion_map_150"), "30", "150", 1);
-  ASSERT_EQ(m.size(), 5u);
-  ASSERT_EQ(slow.size(), 1u);
+  const auto m = study(out, "15,30,45,60,90", "150,200,300", 15);
+  ASSERT_EQ(m.size(), 15u);
   for (const auto& [key, value] : m) EXPECT_GT(value, 0) << key.first << " deg " << key.second;
   // The removal had stopped before the end: nothing removed over the last 0.2 us.
-  for (const char* run : {"run00_variables.angle-15_variables.speed-300",
-                          "run01_variables.angle-30_variables.speed-300"}) {
+  for (const char* run : {"run10_variables.angle-15_variables.speed-300",
+                          "run11_variables.angle-30_variables.speed-300"}) {
     auto t = read_csv(out + "/" + run + "/probes.csv");
     const auto& rm = t["removed_mass"];
     const auto& time = t["time"];
@@ -101,40 +99,38 @@ TEST(ErosionMap, MaximumAtAShallowAngleAndNormalImpactAboutAThird) {
         EXPECT_EQ(rm[k], rm.back()) << run << ": removal still going at " << time[k];
       }
   }
-
-  // Angle of the maximum in [15, 40] deg: 15 or 30 deg above 45, 60 and 90 deg.
-  const double m15 = m.at({15, 300}), m30 = m.at({30, 300}), m45 = m.at({45, 300}),
-               m60 = m.at({60, 300}), m90 = m.at({90, 300});
-  const double mx = std::max({m15, m30, m45, m60, m90});
-  EXPECT_TRUE(mx == m15 || mx == m30) << m15 << " " << m30 << " " << m45 << " " << m60 << " "
-                                      << m90;
-  EXPECT_GT(mx, std::max({m45, m60, m90}));
-  // Normal impact at most half of the maximum (Hutchings: about one-third).
-  EXPECT_LE(m90, 0.5 * mx) << m90 << " against " << mx;
-  RecordProperty("normal_over_maximum", std::to_string(m90 / mx));
-  // Removal at 30 deg growing at least as v^2 (the literature's lower bound) from 150 to 300 m/s.
-  const double m30_150 = slow.at({30, 150});
-  ASSERT_GT(m30_150, 0);
-  const double n = std::log(m30 / m30_150) / std::log(2.0);
-  EXPECT_GE(n, 2.0) << m30_150 << " -> " << m30;
-  RecordProperty("speed_exponent_30deg", std::to_string(n));
+  std::vector<std::pair<double, double>> sum;
+  for (int v : {150, 200, 300}) {
+    // Angle of the maximum in [15, 40] deg: 15 or 30 deg above 45, 60 and 90 deg.
+    const double m15 = m.at({15, v}), m30 = m.at({30, v}), m45 = m.at({45, v}), m60 = m.at({60, v}),
+                 m90 = m.at({90, v});
+    const double mx = std::max({m15, m30, m45, m60, m90});
+    EXPECT_GT(std::max(m15, m30), std::max({m45, m60, m90}))
+        << v << " m/s: " << m15 << " " << m30 << " " << m45 << " " << m60 << " " << m90;
+    // Normal impact at most half of the maximum (Hutchings: about one-third), at 300 m/s.
+    if (v == 300) {
+      EXPECT_LE(m90, 0.5 * mx) << m90 << " against " << mx;
+      RecordProperty("normal_over_maximum", std::to_string(m90 / mx));
+    }
+    sum.push_back({v, m15 + m30 + m45 + m60 + m90});
+  }
+  const double n = exponent(sum);
+  EXPECT_GE(n, 2.0);
+  EXPECT_LE(n, 3.0);
+  RecordProperty("speed_exponent", std::to_string(n));
 }
 
-// The literature's whole shape over the map, 15-90 deg and 100-300 m/s (20 runs, about 6 min on
-// one thread). NOT MET, hence disabled (docs/studies/erosion_map/README.md):
-//  - speed exponent (least squares, 100-300 m/s) in [2, 3]: measured 3.20 for the sum over the
-//    angles at dp = 10 um (per angle 1.93 at 90 deg to 5.87 at 15 deg), 3.05 at dp = 5 um
-//    (per angle 2.50 at 45 deg to 3.67 at 15 deg; 15 and 30 deg above 3 at both);
-//  - maximum at 15-40 deg with normal impact <= 0.5 of it at every speed: at dp = 10 um the
-//    maximum is at 90/60/45 deg (tied, 2 particles) at 100 m/s, 30/45/60 (tied, 4 particles) at
-//    150 m/s and 45 deg at 200 m/s, normal/maximum 1.00, 0.50, 0.50; at dp = 5 um at 45, 60
-//    and 60 deg, normal/maximum 0.57, 0.15, 0.36 (at 300 m/s: 30 deg, 0.27 at dp; 15 deg, 0.25
-//    at dp/2: met).
-// Below 300 m/s the coarse map removes 0-8 particles (quantised) and starts at a threshold near
-// 100-150 m/s at 15-30 deg, which steepens the exponent; at dp = 5 um (20 across, 14,712
-// particles, 79-123 s a run, 35 min for the map) every run removes 4-322 particles, but the cells
-// change by -60 % to +600 % from dp: the map is not converged at either resolution, and dp/4
-// (about 4.7 h on one thread) was not run.
+// The literature's whole shape over the map, 15-90 deg and 100-300 m/s (20 runs, about 7 min on
+// one thread). NOT MET, hence disabled (docs/studies/erosion_map/README.md). With friction 0.3:
+//  - speed exponent of the angle sum (least squares, 100-300 m/s) in [2, 3]: met, 2.70 at
+//    dp = 10 um and 2.41 at dp = 5 um (without friction 3.20 / 3.05); per angle not met: 1.72
+//    (60 deg) to 3.44 (30 deg) at dp, 1.87 (30 deg) to 2.72 at dp/2;
+//  - maximum at 15-40 deg with normal impact <= 0.5 of it at every speed: at dp the maximum is
+//    at 60 deg at 100 m/s (3 particles against 1-2) and at 30 deg at 150-300 m/s, normal/maximum
+//    0.67, 0.20, 0.86, 0.38; at dp/2 at 30, 60, 60, 30 deg, normal/maximum 0.29, 0.46, 0.19,
+//    0.81.
+// The map is not converged: from dp to dp/2 the cells change by up to a factor 3-4 (15 deg, 100 m/s
+// and 60 deg, 150-200 m/s), and dp/4 (about 5 h on one thread) was not run.
 TEST(ErosionMap, DISABLED_LiteratureShapeAndSpeedExponentOverTheWholeMap) {
   const auto m = study(out_dir("erosion_map_whole"), "15,30,45,60,90", "100,150,200,300", 20);
   ASSERT_EQ(m.size(), 20u);
