@@ -17,7 +17,8 @@ int run_main(int argc, char** argv);
 }
 
 int main(int argc, char** argv) {
-  monosph::Comm::init(&argc, &argv);  // under mpirun only
+  monosph::reexec_with_short_spin(argv);  // before MPI and OpenMP start
+  monosph::Comm::init(&argc, &argv);      // under mpirun only
   const int code = run_main(argc, argv);
   monosph::Comm::finalize();
   return code;

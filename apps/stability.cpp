@@ -107,9 +107,9 @@ int run_stability(const StabilityOptions& opt) {
     throw InputError("stability: cannot write to " + out.string() +
                      (ec ? ": " + ec.message() : ""));
 
-  const int threads = opt.threads > 0 ? opt.threads : std::max(1, usable_cpus() / opt.jobs);
+  const auto [njobs, threads] = jobs_and_threads("stability", opt.jobs, opt.threads);
   fmt::print("stability: {} scene{}{}, {} at a time, {} thread{} each, in {}\n", chosen.size(),
-             chosen.size() == 1 ? "" : "s", opt.quick ? " (quick)" : "", opt.jobs, threads,
+             chosen.size() == 1 ? "" : "s", opt.quick ? " (quick)" : "", njobs, threads,
              threads > 1 ? "s" : "", out.string());
   std::fflush(stdout);
   std::vector<ChildRun> jobs;
@@ -126,7 +126,7 @@ int run_stability(const StabilityOptions& opt) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   std::size_t done = 0;
-  run_children(jobs, opt.jobs, [&](std::size_t k) {
+  run_children(jobs, njobs, [&](std::size_t k) {
     SuiteScene& s = chosen[k];
     s.code = jobs[k].code;
     std::ifstream js(out / s.name / "summary.json");

@@ -155,9 +155,9 @@ int run_study(const StudyOptions& opt) {
     if (a == axes.size()) break;
   }
 
-  const int threads = opt.threads > 0 ? opt.threads : std::max(1, usable_cpus() / opt.jobs);
+  const auto [njobs, threads] = jobs_and_threads("study", opt.jobs, opt.threads);
   fmt::print("study: {} runs of {}, {} at a time, {} thread{} each, in {}\n", runs.size(),
-             base.name, opt.jobs, threads, threads > 1 ? "s" : "", out.string());
+             base.name, njobs, threads, threads > 1 ? "s" : "", out.string());
   std::vector<ChildRun> jobs;
   for (auto& r : runs) {
     fs::remove_all(r.dir, ec);
@@ -169,7 +169,7 @@ int run_study(const StudyOptions& opt) {
     jobs.push_back(std::move(c));
   }
   std::size_t done = 0;
-  run_children(jobs, opt.jobs, [&](std::size_t k) {
+  run_children(jobs, njobs, [&](std::size_t k) {
     Run& r = runs[k];
     ++done;
     r.code = jobs[k].code;

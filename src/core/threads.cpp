@@ -1,6 +1,8 @@
 #include "core/threads.hpp"
 
+#include <fmt/format.h>
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +47,28 @@ void set_default_threads() {
   for (const char* v : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
     if (const char* s = std::getenv(v)) local = std::max(local, std::atoi(s));
   omp_set_num_threads(std::max(1, usable_cpus() / local));
+}
+
+JobThreads jobs_and_threads(const char* verb, int jobs, int threads) {
+  const int cpus = usable_cpus();
+  JobThreads r{std::clamp(jobs, 1, cpus), 0};
+  if (r.jobs < jobs)
+    fmt::print(stderr, "monosph: warning: {}: --jobs {} lowered to {} (the usable CPUs)\n", verb,
+               jobs, r.jobs);
+  const int most = std::max(1, cpus / r.jobs);
+  r.threads = threads > 0 ? std::min(threads, most) : most;
+  if (threads > most)
+    fmt::print(stderr,
+               "monosph: warning: {}: --threads {} lowered to {} ({} jobs on {} usable CPUs)\n",
+               verb, threads, most, r.jobs, cpus);
+  return r;
+}
+
+void reexec_with_short_spin(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
+  if (setenv("GOMP_SPINCOUNT", kSpinCount, 1) != 0) return;
+  execv("/proc/self/exe", argv);  // returns only on failure: go on with libgomp's default
+  unsetenv("GOMP_SPINCOUNT");
 }
 
 }  // namespace monosph
