@@ -39,6 +39,9 @@ void read_kernel(MapReader& r, Scene& s) {
   s.kernel = kernel_from_name(
       k.choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"}, "cubic_spline"));
   s.h_factor = k.positive("h_factor", 1.3);
+  if (s.h_factor < 1 || s.h_factor > 3)  // below: too few neighbours; above: every pair
+    scene_error("kernel.h_factor",
+                fmt::format("must lie in [1, 3] (h / dp), got {:g}", s.h_factor));
   k.finish();
 }
 
@@ -69,6 +72,9 @@ void read_neighbours(MapReader& r, Scene& s) {
   if (!r.has("neighbours")) return void(r.optional("neighbours"));
   MapReader nb(r.node("neighbours"), "neighbours");
   s.skin_factor = nb.positive("skin", 0.3);
+  if (s.skin_factor > 2)
+    scene_error("neighbours.skin",
+                fmt::format("must lie in (0, 2] (a fraction of h), got {:g}", s.skin_factor));
   s.reorder_every = nb.integer("reorder_every", 1);
   if (s.reorder_every < 0) scene_error("neighbours.reorder_every", "must be 0 (never) or more");
   nb.finish();
@@ -106,8 +112,9 @@ void read_probe_section(MapReader& r, Scene& s) {
 
 }  // namespace
 
-Scene load_scene_text(const std::string& text, const std::vector<std::string>& overrides,
-                      const std::string& origin) {
+namespace {
+Scene read_scene(const std::string& text, const std::vector<std::string>& overrides,
+                 const std::string& origin) {
   YAML::Node root = parse_scene_yaml(text, origin);
   if (!root.IsMap()) throw InputError(origin + ": a scene must be a YAML map of keys");
   // The written end time, which the references are posed at (checked below as end_time).
@@ -118,10 +125,12 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
     } catch (const YAML::Exception&) {  // malformed: reported below, unless --set replaces it
     }
   }
+  check_yaml_tree(root, origin);  // keys plain and unique, text valid UTF-8
   for (const auto& o : overrides) {
     check_variable_override(root, o);  // scene_variables.cpp: a typo in a variable name fails
     apply_override(root, o);
   }
+  if (!overrides.empty()) check_yaml_tree(root, origin);
   Scene s;
   {
     YAML::Emitter out;
@@ -130,6 +139,7 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   }
   MapReader r(root, "");
   s.name = r.text("name", "scene");
+  check_name(s.name);
   s.description = r.text("description", "");
   s.dimension = r.integer("dimension", 2);
   if (s.dimension != 2 && s.dimension != 3)
@@ -159,11 +169,28 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
   read_probe_section(r, s);
   read_references(r, s);
   read_checks(r, s);
+  read_limits(r, s);
   r.finish();
+  check_scene_expressions(s);
+  check_size(s);
   return s;
+}
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::vector<std::string>& overrides,
+                      const std::string& origin) {
+  try {
+    return read_scene(text, overrides, origin);
+  } catch (const YAML::Exception& e) {  // a YAML case no check above foresaw: still bad input
+    throw InputError(origin + ": YAML error at line " + std::to_string(e.mark.line + 1) + ": " +
+                     e.msg);
+  }
 }
 
 Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": cannot read scene file (it is a folder)");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot read scene file");
   std::stringstream ss;

@@ -10,8 +10,9 @@ namespace monosph {
 
 namespace {
 
-void check_expression(const std::string& text, const std::string& path, const Constants& vars) {
-  Expression e(text, path, vars);
+void check_expression(const std::string& text, const std::string& path, const Constants& vars,
+                      const std::string& variables = "xyzt") {
+  Expression e(text, path, vars, variables);
 }
 
 // Built-in initial velocity profiles, written out as expressions.
@@ -85,11 +86,11 @@ void read_initial(MapReader& b, BodySpec& body, const std::string& p, const Scen
   body.density_expr = in.text("density", "");
   body.temperature = in.positive("temperature", 0.0 + body.temperature);
   if (!body.density_expr.empty())
-    check_expression(body.density_expr, in.at("density"), s.variables);
+    check_expression(body.density_expr, in.at("density"), s.variables, "xyz");
   if (in.has("velocity") && in.has("velocity_profile"))
     scene_error(in.path(), "give either velocity or velocity_profile, not both");
   if (in.has("velocity"))
-    body.velocity_expr = expressions(in, "velocity", dim, s.variables);
+    body.velocity_expr = expressions(in, "velocity", dim, s.variables, "xyz");
   else
     in.optional("velocity");
   if (in.has("velocity_profile"))
@@ -267,18 +268,20 @@ void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim
 
 BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   const int dim = s.dimension;
-  std::string p = "bodies[" + std::to_string(i) + "]";
-  MapReader b(node, p);
   BodySpec body;
-  body.name = b.text("name");
-  p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
+  body.name = MapReader(node, "bodies[" + std::to_string(i) + "]").text("name");
+  const std::string p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
+  MapReader b(node, p);  // the name in the paths of the body's keys
+  b.text("name");
   for (const auto& other : s.bodies)
     if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
   read_body_head(b, body, p, s);
   body.shape = read_shape(b.node("shape"), p + ".shape", dim);
   body.jitter = b.non_negative("jitter", 0.0);
   if (body.jitter >= 0.5) scene_error(p + ".jitter", "must be below 0.5 (fraction of dp)");
-  body.seed = static_cast<unsigned>(b.integer("seed", 1));
+  const int seed = b.integer("seed", 1);
+  if (seed < 0) scene_error(p + ".seed", "must not be negative, got " + std::to_string(seed));
+  body.seed = static_cast<unsigned>(seed);
   read_initial(b, body, p, s);
   read_stabilisation(b, body, p, s);
   read_hourglass(b, body, p);
@@ -349,7 +352,7 @@ void switch_modules_on(Scene& s) {
 }  // namespace
 
 std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim,
-                                     const Constants& vars) {
+                                     const Constants& vars, const std::string& variables) {
   auto n = r.node(key);
   if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
     scene_error(r.at(key), "expected a list of " + std::to_string(dim) + " expressions");
@@ -357,7 +360,7 @@ std::vector<std::string> expressions(MapReader& r, const std::string& key, int d
   for (int a = 0; a < dim; ++a) {
     std::string p = r.at(key) + "[" + std::to_string(a) + "]";
     out.push_back(as_text(n[a], p));
-    check_expression(out.back(), p, vars);
+    check_expression(out.back(), p, vars, variables);
   }
   return out;
 }

@@ -1,4 +1,6 @@
 // The scene sections `time_step`, `guards`, `output`, `reference`, `checks` and `limits`.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 
@@ -7,14 +9,27 @@
 
 namespace monosph {
 
+namespace {
+// A value in [lo, hi]: smaller CFL numbers give steps so small the run never ends.
+void check_range(double v, double lo, double hi, const std::string& path,
+                 const std::string& what = "") {
+  if (!(v >= lo && v <= hi))
+    scene_error(path, fmt::format("must lie in [{:g}, {:g}]{}, got {:g}", lo, hi, what, v));
+}
+}  // namespace
+
 void read_time_step(MapReader& r, Scene& s) {
   if (!r.has("time_step")) return void(r.optional("time_step"));
   MapReader t(r.node("time_step"), "time_step");
   s.cfl = t.positive("cfl", 0.3);
-  if (s.cfl > 1.0) scene_error("time_step.cfl", "must not exceed 1");
+  check_range(s.cfl, 1e-3, 1, "time_step.cfl");
   s.force_factor = t.positive("force_factor", 0.25);
+  check_range(s.force_factor, 1e-3, 1, "time_step.force_factor");
   s.max_dt = t.non_negative("max", 0.0);
   s.dt_collapse = t.positive("collapse_ratio", 1e-4);
+  if (s.dt_collapse >= 1)
+    scene_error("time_step.collapse_ratio",
+                fmt::format("must lie in (0, 1), got {:g}", s.dt_collapse));
   s.newmark_gamma = t.number("newmark_gamma", 0.5);
   if (t.has("dual_criteria")) {
     MapReader dc(t.node("dual_criteria"), "time_step.dual_criteria");
@@ -22,8 +37,10 @@ void read_time_step(MapReader& r, Scene& s) {
     s.advection_cfl = dc.non_negative("advection_cfl", 0.2);
     s.acoustic_cfl = dc.positive("acoustic_cfl", 0.4);  // Eq. 22
     s.frozen_kernel = dc.choice("kernel", {"refreshed", "frozen"}, "refreshed") == "frozen";
-    if (s.advection_cfl > 1.0) scene_error(dc.at("advection_cfl"), "must not exceed 1");
-    if (s.acoustic_cfl > 1.0) scene_error(dc.at("acoustic_cfl"), "must not exceed 1");
+    if (s.advection_cfl != 0 && !(s.advection_cfl >= 1e-3 && s.advection_cfl <= 1))
+      scene_error(dc.at("advection_cfl"),
+                  fmt::format("must be 0 (off) or lie in [0.001, 1], got {:g}", s.advection_cfl));
+    check_range(s.acoustic_cfl, 1e-3, 1, dc.at("acoustic_cfl"));
     dc.finish();
   } else {
     t.optional("dual_criteria");
@@ -38,6 +55,9 @@ void read_guards(MapReader& r, Scene& s) {
   MapReader g(r.node("guards"), "guards");
   s.max_mach = g.positive("max_mach", 0.5);
   s.min_distance = g.non_negative("min_distance", 0.1);
+  if (s.min_distance >= 1)
+    scene_error("guards.min_distance",
+                fmt::format("must lie in [0, 1) (a fraction of dp), got {:g}", s.min_distance));
   g.finish();
 }
 
@@ -62,6 +82,9 @@ void read_references(MapReader& r, Scene& s) {
     MapReader q(refs[i], p);
     ReferenceSpec rs;
     rs.name = q.text("name");
+    for (const auto& other : s.references)
+      if (other.name == rs.name)
+        scene_error(p + " (" + rs.name + ").name", "duplicate reference name");
     // No value: a measured figure without reference (a study's value, e.g. removed mass).
     rs.value = q.number("value", std::numeric_limits<double>::quiet_NaN());
     rs.probe = q.text("probe");
@@ -85,18 +108,30 @@ void read_checks(MapReader& r, Scene& s) {
     MapReader q(list[i], p);
     CheckSpec c;
     c.name = q.text("name");
+    for (const auto& other : s.checks)
+      if (other.name == c.name) scene_error(p + " (" + c.name + ").name", "duplicate check name");
     c.probe = q.text("probe");
     c.measure = q.choice("measure", {"final", "max", "min", "mean", "drift", "growth", "trend",
                                      "period", "frequency", "angular_frequency", "peak_ratio"});
     if (q.has("min")) c.min = q.number("min");
     if (q.has("max")) c.max = q.number("max");
     if (!q.has("min") && !q.has("max")) scene_error(p, "give min, max or both");
+    if (c.min > c.max) scene_error(p + ".min", "must not exceed max");
     c.start = q.non_negative("start", 0.0);
     if (!names_probe_column(s.probes, c.probe))
       scene_error(p + ".probe", "no probe named '" + c.probe + "'");
     q.finish();
     s.checks.push_back(std::move(c));
   }
+}
+
+// The size guard's limits (scene_checks.cpp): particles and bytes.
+void read_limits(MapReader& r, Scene& s) {
+  if (!r.has("limits")) return void(r.optional("limits"));
+  MapReader l(r.node("limits"), "limits");
+  s.max_particles = l.positive("max_particles", 0.0);
+  s.max_memory = l.positive("max_memory", 0.0);
+  l.finish();
 }
 
 }  // namespace monosph

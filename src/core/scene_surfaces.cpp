@@ -29,7 +29,7 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   s.translate =
       q.has("translate") ? q.vector("translate", dim) : (q.optional("translate"), Point(dim, 0.0));
   if (q.has("velocity"))
-    s.velocity_expr = expressions(q, "velocity", dim, vars);
+    s.velocity_expr = expressions(q, "velocity", dim, vars, "t");
   else
     s.velocity_expr.assign(dim, "0"), q.optional("velocity");
   const std::vector<std::string> kinds2 = {"box", "plane", "segment", "polyline", "polygon"};
