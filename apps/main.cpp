@@ -192,7 +192,13 @@ int run_main(int argc, char** argv) {
     if (run.threads > 0) run.threads = clamp_threads(run.threads);
     if (study.threads > 0) study.threads = clamp_threads(study.threads);
     if (stab.threads > 0) stab.threads = clamp_threads(stab.threads);
-    for (int& t : bench.threads) t = clamp_threads(t);
+    if (*cmd_bench && cmd_bench->count("--threads") > 0) {
+      for (int& t : bench.threads) t = clamp_threads(t);
+    } else if (*cmd_bench) {  // the default thread counts: those this machine has
+      const int cpus = usable_cpus();
+      std::erase_if(bench.threads, [cpus](int t) { return t > cpus; });
+      if (bench.threads.empty()) bench.threads = {1};
+    }
     if (*cmd_run) {
       if (run.scene.empty() && run.restart.empty())
         throw InputError("run: give a scene file or --restart FILE");

@@ -15,10 +15,17 @@ namespace monosph {
 
 namespace {
 
-// Bytes a run needs per particle, measured as peak resident set / particles (README, "Size
-// guard"): fields, neighbour lists, pair caches, module data and a frame being written.
-constexpr double kBytesPerParticle2d = 2500, kBytesPerParticle3d = 6000;
-constexpr double kProgramBytes = 60e6;  // the program and its libraries
+// Bytes a run needs per particle: peak resident set / particles, measured on 80k-190k particle
+// runs (README, "Size guard"): 2D dam break 1.7 kB, plate 2.3 kB, AFM 2.4 kB; 3D acoustic wave
+// 5.2 kB, Taylor bar (plasticity) 11.0 kB. Fields, neighbour lists, pair caches, module data and
+// a frame being written.
+double bytes_per_particle(const Scene& s) {
+  if (s.dimension == 2) return 2500;
+  const bool solid = std::any_of(s.bodies.begin(), s.bodies.end(),
+                                 [](const BodySpec& b) { return b.phase == "solid"; });
+  return solid ? 12000 : 6000;
+}
+constexpr double kProgramBytes = 35e6;  // the program and its libraries (measured 33.6 MB)
 
 std::string bytes_text(double b) {
   const char* units[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
@@ -197,8 +204,7 @@ void check_size(const Scene& s) {
   if (s.max_particles > 0 && n > s.max_particles)
     scene_error("dp",
                 fmt::format("{}, more than limits.max_particles ({:g})", head, s.max_particles));
-  const double per = s.dimension == 2 ? kBytesPerParticle2d : kBytesPerParticle3d;
-  const double need = n * per * local_share() + kProgramBytes;
+  const double need = n * bytes_per_particle(s) * local_share() + kProgramBytes;
   const double limit = s.max_memory > 0 ? s.max_memory : available_memory();
   if (limit > 0 && need > limit)
     scene_error(
