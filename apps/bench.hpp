@@ -26,5 +26,7 @@ int run_bench_suite(const BenchOptions& opt);
 // or of any scene at refined spacings, on each thread count, and neighbour-build time per
 // particle. Prints a table; optional JSON.
 int run_bench(const BenchOptions& opt);
+// InputError "bench: cannot write FILE" unless FILE (if given) can be written.
+void check_writable(const std::string& file);
 
 }  // namespace monosph

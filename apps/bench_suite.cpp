@@ -64,6 +64,8 @@ int run_bench_suite(const BenchOptions& opt) {
   };
   if (opt.quick)
     for (auto& k : cases) k.refine.resize(1);
+  check_writable(opt.json);
+  check_writable(opt.append);
   nlohmann::json rows = nlohmann::json::array();
   fmt::print("{:<50} {:>9} {:>3} {:>6} {:>9} {:>13} {:>24}\n", "case", "particles", "thr", "steps",
              "wall [s]", "part-steps/s", "slowest pass (share)");

@@ -42,6 +42,7 @@ std::vector<SuiteScene> read_suite(const std::string& file) {
   }
   std::vector<SuiteScene> out;
   try {
+    check_yaml_tree(root, file);
     MapReader top(root, "");
     auto list = top.node("scenes");
     if (!list.IsSequence()) scene_error("scenes", "expected a list of {scene, quick}");

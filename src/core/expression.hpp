@@ -14,8 +14,10 @@ class Expression {
  public:
   Expression();
   // Throws InputError "<where>: invalid expression '<text>': <reason>" (an unknown name near one
-  // of the constants adds "did you mean '<constant>'?").
-  Expression(const std::string& text, const std::string& where, const Constants& constants = {});
+  // of the constants adds "did you mean '<constant>'?"). `variables`: which of x, y, z, t the
+  // expression may use (a surface's velocity: "t" only).
+  Expression(const std::string& text, const std::string& where, const Constants& constants = {},
+             const std::string& variables = "xyzt");
   Expression(const Expression&) = delete;
   Expression& operator=(const Expression&) = delete;
   Expression(Expression&&) noexcept;

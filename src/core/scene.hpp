@@ -3,6 +3,7 @@
 // allowed). Dimension-agnostic: vectors are std::vector<double> of length `dimension`.
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -233,10 +234,23 @@ struct Scene {
   std::vector<CheckSpec> checks;
   Constants variables;    // section `variables`: names every expression of the scene can use
   int reorder_every = 1;  // particles re-sorted in cell order every N neighbour builds
+  // Section `limits` (the size guard): the most particles (0: no limit) and bytes (0: the memory
+  // available on this machine) a run may need.
+  double max_particles = 0, max_memory = 0;
 
   double h() const { return h_factor * dp; }
   int material_index(const std::string& name) const;  // -1 if unknown
 };
+
+// Calls visit(x) for the lattice nodes of the scene (those Simulation fills) inside `shape`, every
+// stride-th node along each axis so that at most about max_nodes are visited; stops when visit
+// returns false. Returns the stride (1: every node).
+long walk_lattice(const Scene& s, const Shape& shape, double max_nodes,
+                  const std::function<bool(const Point&)>& visit);
+
+// Particles the lattice fill creates: exact (*exact = true) when every body's bounding box holds
+// at most a million lattice nodes, else estimated on a coarser lattice. Never allocates.
+double count_particles(const Scene& s, bool* exact = nullptr);
 
 // Reads and validates a scene. `overrides` are "a.b.c=value" strings (command line --set).
 // Throws InputError with a one-line message naming the key path.

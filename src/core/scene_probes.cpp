@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "expression.hpp"
+#include "scene_parts.hpp"
 
 namespace monosph {
 
@@ -153,11 +155,32 @@ void check_body(const std::string& p, const ProbeSpec& ps, const Scene& s) {
                                  ps.type + " needs a body with phase: rigid");
 }
 
+// A probe's name is a CSV column (and a profile's file name): plain text.
+void check_probe_name(const std::string& name, const std::string& path) {
+  if (name.empty()) scene_error(path, "must not be empty (it names a column of probes.csv)");
+  const bool bad = std::any_of(name.begin(), name.end(), [](char c) {
+    return c == ',' || c == '"' || c == '/' || c == '\\' || static_cast<unsigned char>(c) < 0x20;
+  });
+  if (bad)
+    scene_error(path, "'" + printable(name) +
+                          "' is not a column name (no commas, quotes, slashes or control "
+                          "characters)");
+}
+
+// The columns a probe writes: its name, or name_x, name_y (, name_z); a profile its file.
+std::vector<std::string> column_names(const ProbeSpec& ps) {
+  if (ps.columns <= 1) return {ps.type == "profile" ? "profile_" + ps.name : ps.name};
+  std::vector<std::string> out{ps.name};  // a bare momentum name stands for its x column
+  for (int a = 0; a < ps.columns; ++a) out.push_back(ps.name + "_" + "xyz"[a]);
+  return out;
+}
+
 ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& s) {
   const int dim = s.dimension;
   MapReader q(node, p);
   ProbeSpec ps;
   ps.name = q.text("name");
+  check_probe_name(ps.name, q.at("name"));
   ps.type = q.choice("type", kTypes);
   if (is_one_of(ps.type, {"integral", "mean", "value_at", "tracked", "field_max", "field_min",
                           "extent", "profile"}))
@@ -215,9 +238,14 @@ void read_probes(MapReader& pr, Scene& s) {
   s.probe_every = pr.non_negative("every", 0.0);
   auto list = pr.node("list");
   if (!list.IsSequence()) scene_error("probes.list", "expected a list of probes");
+  std::set<std::string> columns = {"time", "step"};  // of probes.csv (and profile files)
   for (std::size_t i = 0; i < list.size(); ++i) {
-    ProbeSpec ps = read_probe(list[i], "probes.list[" + std::to_string(i) + "]", s);
+    const std::string p = "probes.list[" + std::to_string(i) + "]";
+    ProbeSpec ps = read_probe(list[i], p, s);
     ps.columns = column_count(ps.type, s.dimension);
+    for (const auto& c : column_names(ps))
+      if (!columns.insert(c).second)
+        scene_error(p + " (" + ps.name + ").name", "duplicate probe column '" + c + "'");
     s.probes.push_back(std::move(ps));
   }
 }

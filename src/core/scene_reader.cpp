@@ -1,7 +1,9 @@
 #include "scene_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace monosph {
@@ -33,6 +35,17 @@ std::string describe(const YAML::Node& n) {
   return "a map";
 }
 
+// Names that differ only in their digits (D1, D2): neither is a misspelling of the other.
+bool siblings(const std::string& a, const std::string& b) {
+  auto letters = [](std::string s) {
+    s.erase(std::remove_if(s.begin(), s.end(),
+                           [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }),
+            s.end());
+    return s;
+  };
+  return a != b && letters(a) == letters(b);
+}
+
 std::string join(const std::vector<std::string>& v) {
   std::string s;
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
@@ -56,6 +69,11 @@ double as_number(const YAML::Node& n, const std::string& path) {
   try {
     v = n.as<double>();
   } catch (const YAML::Exception&) {
+    // yaml-cpp refuses an overflowing number (1e400): say that it is not finite.
+    char* end = nullptr;
+    const double d = std::strtod(n.Scalar().c_str(), &end);
+    if (!n.Scalar().empty() && end && *end == '\0' && std::isinf(d))
+      scene_error(path, "expected a finite number, got " + describe(n));
     scene_error(path, "expected a number, got " + describe(n));
   }
   if (!std::isfinite(v)) scene_error(path, "expected a finite number, got " + describe(n));
@@ -89,12 +107,17 @@ bool MapReader::has(const std::string& key) const {
 YAML::Node MapReader::node(const std::string& key) {
   used_.insert(key);
   if (!has(key)) {
-    // A misspelt key is the likely cause: name it.
+    // A misspelt key may be the cause: name a close one that is given (not one read already,
+    // nor a sibling such as D2 for D1).
     std::vector<std::string> present;
-    for (auto it = node_.begin(); it != node_.end(); ++it)
-      present.push_back(it->first.as<std::string>());
-    std::string hint = closest_word(key, present);
-    if (!hint.empty() && hint != key)
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      const std::string k = it->first.Scalar();
+      if (!used_.count(k) && !siblings(k, key)) present.push_back(k);
+    }
+    const std::string hint = closest_word(key, present);
+    // (A for B is no misspelling: the names must share more than they differ in.)
+    if (!hint.empty() && hint != key &&
+        edit_distance(hint, key) < std::min(hint.size(), key.size()))
       scene_error(at(hint), "unknown key; did you mean '" + key + "'? (" + key + " is required)");
     scene_error(at(key), "missing (required)");
   }
@@ -132,6 +155,8 @@ int MapReader::integer(const std::string& key, int fallback) {
   double v = number(key);
   if (v != std::floor(v))
     scene_error(at(key), "expected a whole number, got " + node_[key].Scalar());
+  if (std::abs(v) > 2147483647.0)
+    scene_error(at(key), "must lie within +-2147483647, got " + node_[key].Scalar());
   return static_cast<int>(v);
 }
 bool MapReader::boolean(const std::string& key, bool fallback) {
@@ -175,7 +200,7 @@ std::vector<std::string> MapReader::strings(const std::string& key) {
 void MapReader::finish() {
   std::vector<std::string> allowed(used_.begin(), used_.end());
   for (auto it = node_.begin(); it != node_.end(); ++it) {
-    std::string key = it->first.as<std::string>();
+    std::string key = it->first.Scalar();
     if (used_.count(key)) continue;
     std::string hint = closest_word(key, allowed);
     scene_error(at(key), "unknown key (allowed: " + join(allowed) + ")" +

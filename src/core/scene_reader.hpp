@@ -47,6 +47,10 @@ class MapReader {
   std::set<std::string> used_;
 };
 
+// Every map key of the tree a plain, unique name, every text valid UTF-8 (yaml-cpp accepts
+// complex keys and keeps both entries of a key given twice). `origin` names the file.
+void check_yaml_tree(const YAML::Node& root, const std::string& origin);
+
 // Scalar conversion with a path-naming error.
 double as_number(const YAML::Node& n, const std::string& path);
 std::string as_text(const YAML::Node& n, const std::string& path);

@@ -1,5 +1,6 @@
 #include "simulation.hpp"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -219,7 +220,7 @@ void Simulation<D>::fill_bodies() {
     done.push_back(b);
     if (accepted == 0)
       throw InputError("bodies[" + std::to_string(b) + "] (" + body.name +
-                       ").shape: contains no lattice node at dp = " + std::to_string(dp));
+                       ").shape: contains no lattice node at dp = " + fmt::format("{:g}", dp));
     // Jitter draws D numbers per accepted node in lattice order, kept or not.
     std::mt19937 rng(body.seed);
     std::uniform_real_distribution<double> uni(-1.0, 1.0);
@@ -253,6 +254,7 @@ void Simulation<D>::fill_bodies() {
     auto bd = p_.body();
     auto pid = p_.id();
     const double vol = std::pow(dp, D);  // per unit depth in 2D
+    const std::string at = "bodies[" + std::to_string(b) + "] (" + body.name + ").initial.";
     for (std::size_t q = 0; q < pts.size(); ++q) {
       const std::size_t i = first + q;
       pid[i] = next_id + ids[q];
@@ -260,13 +262,15 @@ void Simulation<D>::fill_bodies() {
         x[i][a] = pts[q][a] + (jit.empty() ? 0.0 : body.jitter * dp * jit[q * D + a]);
       const double xx = x[i][0], yy = x[i][1], zz = D == 3 ? x[i][D - 1] : 0.0;
       rho[i] = rho_ex.empty() ? mat.density : rho_ex(xx, yy, zz, 0.0);
-      if (!(rho[i] > 0))
-        throw InputError("bodies[" + std::to_string(b) + "] (" + body.name +
-                         ").initial.density: not positive at a particle (" +
+      if (!(rho[i] > 0) || !std::isfinite(rho[i]))  // inf passes > 0
+        throw InputError(at + "density: not a positive finite value at a particle (" +
                          std::to_string(rho[i]) + ")");
       m[i] = rho[i] * vol;
-      for (int a = 0; a < D; ++a)
+      for (int a = 0; a < D; ++a) {
         v[i][a] = body.velocity_expr.empty() ? 0.0 : vel_ex[a](xx, yy, zz, 0.0);
+        if (!std::isfinite(v[i][a]))
+          throw InputError(at + "velocity[" + std::to_string(a) + "]: not finite at a particle");
+      }
       ph[i] = bodies_[b].phase;
       mt[i] = body.material;
       bd[i] = static_cast<std::int64_t>(b);
