@@ -221,6 +221,9 @@ int run_main(int argc, char** argv) {
   } catch (const RunAborted& e) {
     if (Comm::world().root()) fmt::print(stderr, "monosph: run stopped: {}\n", e.what());
     return 3;
+  } catch (const OutputError& e) {  // disk full, I/O error: every rank throws it together
+    if (Comm::world().root()) fmt::print(stderr, "monosph: error: {}\n", e.what());
+    return 6;
   } catch (const std::exception& e) {
     const Comm& c = Comm::world();
     fmt::print(stderr, "monosph: internal error{}: {}\n",

@@ -12,7 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "assemble.hpp"
+#include "core/atomic_file.hpp"
 #include "core/checkpoint.hpp"
+#include "core/checkpoint_check.hpp"
 #include "core/memory.hpp"
 #include "core/output_vtk.hpp"
 #include "core/probe_csv.hpp"
@@ -200,6 +202,13 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     sim.diagnostics();
     csv.row(sim.time(), sim.step(), probes.sample(sim));
   };
+  // probes.csv and the profile files: a failed write (disk full) stops the run at the next frame
+  // or at the end, on every rank at once (OutputError, exit code 6).
+  auto check_csv = [&] {
+    csv.flush();  // collective
+    const std::string err = comm.first_message(probes.write_error());
+    if (!err.empty()) throw OutputError(err);
+  };
   long rebuilt_step = -1, ckpt_step = -1;
   auto checkpoint = [&](const fs::path& file) {
     ckpt_step = sim.step();
@@ -226,6 +235,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
 
   long frame_step = -1;  // step of the last frame written
   auto frame = [&] {
+    check_csv();
     sim.diagnostics();
     frame_step = sim.step();
     return vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
@@ -297,6 +307,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   res.neighbour_seconds = sim.neighbours().build_seconds();
   res.pass_seconds = sim.pass_seconds();
   if (!opt.write_output) return res;
+  check_csv();
   if (res.exit_code == 0) checkpoint(out / "final.h5");
   // An interrupted run continues from its last state: checkpoint.h5 (restart from it).
   if (status == "interrupted" && ckpt_step != sim.step()) checkpoint(out / "checkpoint.h5");
@@ -413,7 +424,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       if (!all && res.exit_code == 0) res.exit_code = 5;
     }
   }
-  std::ofstream(out / "summary.json") << js.dump(2) << "\n";
+  try {
+    write_file_atomic(out / "summary.json", js.dump(2) + "\n");
+  } catch (const OutputError&) {
+    // Without its summary a final.h5 would pass for the end of a completed run.
+    std::error_code rm;
+    if (res.exit_code == 0) fs::remove(out / "final.h5", rm);
+    throw;
+  }
   const std::string done = fmt::format(
       "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} threads",
       status == "completed" || status == "interrupted" ? status : "stopped", res.particles,
@@ -471,14 +489,15 @@ RunResult run_scene(const RunOptions& opt) {
   if (!opt.restart.empty()) {
     // The scene stored in the checkpoint, with any --set overrides on top.
     int dim = checkpoint_dimension(opt.restart);
-    if (dim == 2) {
-      Particles<2> probe;
-      meta = read_checkpoint<2>(opt.restart, probe);
-    } else {
-      Particles<3> probe;
-      meta = read_checkpoint<3>(opt.restart, probe);
-    }
+    Particles<2> probe2;
+    Particles<3> probe3;
+    meta = dim == 2 ? read_checkpoint<2>(opt.restart, probe2)
+                    : read_checkpoint<3>(opt.restart, probe3);
     scene = load_scene_text(meta.scene_yaml, opt.overrides, opt.restart);
+    if (dim == 2)  // material, body, phase... indices against the scene
+      check_checkpoint_indices(opt.restart, probe2, meta, scene);
+    else
+      check_checkpoint_indices(opt.restart, probe3, meta, scene);
     // The end time of the scene as first written (the checkpoint's text has its --set values).
     if (auto it = meta.scalars.find("reference_end_time"); it != meta.scalars.end())
       scene.reference_end_time = it->second;

@@ -21,7 +21,8 @@ struct CheckpointMeta {
 
 // Writes file atomically (temporary + rename). Stores every field of p as /fields/<name>
 // (n x ncomp, double or int64, attributes ncomp and output) and meta under /meta. The next_id
-// stored is max(meta.next_id, p.next_id()). Throws InputError if the file cannot be written.
+// stored is max(meta.next_id, p.next_id()). Every dataset is chunked with a Fletcher32 checksum.
+// Throws OutputError ("output: cannot write FILE: reason") if the file cannot be written.
 template <int D>
 void write_checkpoint(const std::filesystem::path& file, const Particles<D>& p,
                       const CheckpointMeta& meta);
@@ -35,7 +36,9 @@ void write_checkpoint(const std::filesystem::path& file, const Particles<D>& p, 
 
 // Restores every field of p exactly (registering missing fields, resizing p, setting next_id)
 // and returns the metadata. Throws InputError naming the file if it is missing, not a monosph
-// checkpoint, damaged, or written with another dimension. On error p is left unchanged.
+// checkpoint, damaged (a checksum fails, a dataset is missing, a real value is not finite, ids
+// out of range: check_checkpoint_data), or written with another dimension. On error p is left
+// unchanged. Checkpoints written before the checksums were added read as before.
 // With parts > 1 only the rows [n part / parts, n (part + 1) / parts) are read (MPI: each rank
 // reads its share of the file).
 template <int D>

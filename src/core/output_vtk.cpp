@@ -7,6 +7,7 @@
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
+#include <vtkObject.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkTypeInt64Array.h>
@@ -25,6 +26,9 @@
 #include <sstream>
 #include <system_error>
 
+#include "atomic_file.hpp"
+#include "comm.hpp"
+
 namespace monosph {
 namespace fs = std::filesystem;
 
@@ -34,13 +38,14 @@ namespace {
   throw InputError("output: cannot write to " + dir.string() + ": " + reason);
 }
 
-// vtkErrorCode::GetStringFromErrorCode lives in CommonMisc, which we do not link.
+// vtkErrorCode::GetStringFromErrorCode lives in CommonMisc, which we do not link. Called right
+// after the write: errno then holds the reason of a failed write (disk full, file too large).
 std::string vtk_error(unsigned long code) {
   switch (code) {
     case vtkErrorCode::CannotOpenFileError:
-      return "cannot open file";
+      return io_error_text("cannot open file");
     case vtkErrorCode::OutOfDiskSpaceError:
-      return "out of disk space";
+      return io_error_text("out of disk space");
     default:
       if (code > 0 && code < vtkErrorCode::FirstVTKErrorCode)
         return std::strerror(static_cast<int>(code));
@@ -159,6 +164,59 @@ void add_array(vtkPointData* pd, const Field& f, std::span<const std::int64_t> p
   }
 }
 
+// The parallel file of a frame: array declarations (as in the pieces) and the piece list.
+template <int D>
+std::string pvtu_text(const Particles<D>& p, const std::vector<int>& ks, const std::string& stem,
+                      int ranks) {
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
+       "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PUnstructuredGrid "
+       "GhostLevel=\"0\">\n    <PPointData>\n";
+  for (int k : ks) {
+    const Field& f = p.field(k);
+    x << "      <PDataArray type=\"" << (f.type == FieldType::Real ? "Float64" : "Int64")
+      << "\" Name=\"" << xml_escape(f.name) << "\" NumberOfComponents=\""
+      << layout<D>(f.ncomp).size() << "\"";
+    const auto names = component_names(layout<D>(f.ncomp).size());
+    for (std::size_t j = 0; j < names.size(); ++j)
+      x << " ComponentName" << j << "=\"" << names[j] << "\"";
+    x << "/>\n";
+  }
+  x << "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"Float64\" "
+       "NumberOfComponents=\"3\"/>\n    </PPoints>\n";
+  for (int r = 0; r < ranks; ++r)
+    x << "    <Piece Source=\"" << xml_escape(stem + "_p" + std::to_string(r) + ".vtu") << "\"/>\n";
+  x << "  </PUnstructuredGrid>\n</VTKFile>\n";
+  return x.str();
+}
+
+// Writes grid to path (through path.tmp, renamed when complete); the error ("" if none).
+std::string write_grid(vtkUnstructuredGrid* grid, const fs::path& path) {
+  const fs::path tmp = temporary_name(path);
+  vtkNew<vtkXMLUnstructuredGridWriter> w;
+  w->SetFileName(tmp.c_str());
+  w->SetInputData(grid);
+  // Inline base64 binary: the file is well-formed XML. Raw appended data is not, and the
+  // ParaView 5.11 of Debian 12 (expat 2.5.0-1+deb12u5, reparse deferral) reads such frames
+  // with 0 points.
+  w->SetDataModeToBinary();
+  w->SetCompressorTypeToZLib();
+  w->SetHeaderTypeToUInt64();
+  errno = 0;
+  if (!w->Write() || w->GetErrorCode() != vtkErrorCode::NoError) {
+    const std::string why = vtk_error(w->GetErrorCode());
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    return "output: cannot write " + path.string() + ": " + why;
+  }
+  try {
+    commit_file(tmp, path, false);
+  } catch (const OutputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 }  // namespace
 
 template <int D>
@@ -169,6 +227,8 @@ VtkSeries<D>::VtkSeries(fs::path dir, std::string basename)
   // (vtkSMPTools.h does not compile as C++20, so the backend is chosen through its variable,
   // read when VTK first uses SMP; a user's own choice is kept.)
   setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 0);
+  // A failed write is reported in one line below, not by a dozen lines of VTK's own.
+  vtkObject::GlobalWarningDisplayOff();
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) cannot_write(dir_, ec.message());
@@ -236,50 +296,28 @@ fs::path VtkSeries<D>::write(const Particles<D>& p, std::size_t owned, double ti
   const std::string file =
       ranks_ > 1 ? stem + "_p" + std::to_string(rank_) + ".vtu" : stem + ".vtu";
   const fs::path path = dir_ / file;
-  vtkNew<vtkXMLUnstructuredGridWriter> w;
-  w->SetFileName(path.c_str());
-  w->SetInputData(grid);
-  // Inline base64 binary: the file is well-formed XML. Raw appended data is not, and the
-  // ParaView 5.11 of Debian 12 (expat 2.5.0-1+deb12u5, reparse deferral) reads such frames
-  // with 0 points.
-  w->SetDataModeToBinary();
-  w->SetCompressorTypeToZLib();
-  w->SetHeaderTypeToUInt64();
-  if (!w->Write() || w->GetErrorCode() != vtkErrorCode::NoError)
-    cannot_write(dir_, vtk_error(w->GetErrorCode()));
+  std::string err = write_grid(grid, path);
+  // Under MPI every rank learns whether all pieces were written before any goes on.
+  if (ranks_ > 1) err = Comm::world().first_message(err);
+  if (!err.empty()) throw OutputError(err);
 
   if (ranks_ > 1) {
-    if (rank_ != 0) return path;
-    // The parallel file: array declarations (as in the pieces) and the piece list.
-    std::ostringstream x;
-    x << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
-         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PUnstructuredGrid "
-         "GhostLevel=\"0\">\n    <PPointData>\n";
-    for (int k : ks) {
-      const Field& f = p.field(k);
-      x << "      <PDataArray type=\"" << (f.type == FieldType::Real ? "Float64" : "Int64")
-        << "\" Name=\"" << xml_escape(f.name) << "\" NumberOfComponents=\""
-        << layout<D>(f.ncomp).size() << "\"";
-      const auto names = component_names(layout<D>(f.ncomp).size());
-      for (std::size_t j = 0; j < names.size(); ++j)
-        x << " ComponentName" << j << "=\"" << names[j] << "\"";
-      x << "/>\n";
-    }
-    x << "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"Float64\" "
-         "NumberOfComponents=\"3\"/>\n    </PPoints>\n";
-    for (int r = 0; r < ranks_; ++r)
-      x << "    <Piece Source=\"" << xml_escape(stem + "_p" + std::to_string(r) + ".vtu")
-        << "\"/>\n";
-    x << "  </PUnstructuredGrid>\n</VTKFile>\n";
+    // Rank 0 writes the parallel file and the .pvd; every rank learns whether that failed.
     const std::string pfile = stem + ".pvtu";
-    std::ofstream out(dir_ / pfile, std::ios::trunc);
-    out << x.str();
-    out.close();
-    if (!out) cannot_write(dir_, "cannot write " + pfile);
-    std::erase_if(frames_, [&](const Frame& f) { return f.file == pfile || f.time >= time; });
-    frames_.push_back({time, pfile});
-    write_pvd();
-    return dir_ / pfile;
+    std::string perr;
+    if (rank_ == 0) {
+      try {
+        write_file_atomic(dir_ / pfile, pvtu_text<D>(p, ks, stem, ranks_), false);
+        std::erase_if(frames_, [&](const Frame& f) { return f.file == pfile || f.time >= time; });
+        frames_.push_back({time, pfile});
+        write_pvd();
+      } catch (const OutputError& e) {
+        perr = e.what();
+      }
+    }
+    perr = Comm::world().first_message(perr);
+    if (!perr.empty()) throw OutputError(perr);
+    return rank_ == 0 ? dir_ / pfile : path;
   }
   // A frame replaces any entry for the same file or a later time (rewrite after a restart).
   std::erase_if(frames_, [&](const Frame& f) { return f.file == file || f.time >= time; });
@@ -298,19 +336,7 @@ void VtkSeries<D>::write_pvd() const {
     s << "    <DataSet timestep=\"" << fmt_double(f.time) << "\" group=\"\" part=\"0\" file=\""
       << xml_escape(f.file) << "\"/>\n";
   s << "  </Collection>\n</VTKFile>\n";
-  // Write to a temporary and rename, so a reader never sees half a file.
-  const fs::path final = pvd_path();
-  fs::path tmp = final;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << s.str();
-    out.close();
-    if (!out) cannot_write(dir_, "cannot write " + tmp.filename().string());
-  }
-  std::error_code ec;
-  fs::rename(tmp, final, ec);
-  if (ec) cannot_write(dir_, ec.message());
+  write_file_atomic(pvd_path(), s.str(), false);  // a reader never sees half a file
 }
 
 template <int D>
@@ -335,7 +361,16 @@ int VtkSeries<D>::restore_frames(double restart_time) {
     if (r.ec != std::errc()) continue;
     if (time <= restart_time) frames_.push_back({time, xml_unescape(mf[1].str())});
   }
-  if (rank_ == 0) write_pvd();
+  std::string err;
+  if (rank_ == 0) {
+    try {
+      write_pvd();
+    } catch (const OutputError& e) {
+      err = e.what();
+    }
+  }
+  if (ranks_ > 1) err = Comm::world().first_message(err);
+  if (!err.empty()) throw OutputError(err);
   return frames();
 }
 

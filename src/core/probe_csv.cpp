@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <charconv>
 #include <limits>
 #include <sstream>
 #include <string_view>
 
+#include "atomic_file.hpp"
 #include "types.hpp"
 
 namespace fs = std::filesystem;
@@ -81,20 +83,29 @@ std::size_t probe_csv_prefix(const std::string& text, const std::string& header,
   return pos;
 }
 
+// A failed write (disk full...): OutputError (exit code 6) on every rank.
 void ProbeCsv::check(bool ok, const std::string& what) {
-  const std::string err =
-      comm_.first_message(ok ? "" : "output: cannot write " + path_.string() + what);
-  if (!err.empty()) throw InputError(err);
+  const std::string err = comm_.first_message(ok ? ""
+                                                 : "output: cannot write " + path_.string() + ": " +
+                                                       io_error_text("write failed") + what);
+  if (!err.empty()) throw OutputError(err);
 }
 
 void ProbeCsv::create(const fs::path& file, const std::vector<std::string>& columns) {
   path_ = file;
   rows_ = 0;
+  bool opened = true;
   if (comm_.root()) {
     out_.open(file, std::ios::trunc);
+    opened = out_.is_open();
+    errno = 0;
     out_ << header_of(columns) << "\n";
     out_.flush();
   }
+  // A file that cannot be created: bad output folder (InputError, exit code 2).
+  const std::string err =
+      comm_.first_message(opened ? "" : "output: cannot write " + file.string());
+  if (!err.empty()) throw InputError(err);
   check(!comm_.root() || bool(out_), "");
 }
 
@@ -151,11 +162,13 @@ void ProbeCsv::row(double time, long step, const std::vector<double>& values) {
 }
 
 void ProbeCsv::flush() {
+  errno = 0;
   if (comm_.root()) out_.flush();
   check(!comm_.root() || bool(out_), "");
 }
 
 void ProbeCsv::close() {
+  errno = 0;
   if (comm_.root() && out_.is_open()) out_.close();
   check(!comm_.root() || bool(out_), "");
 }

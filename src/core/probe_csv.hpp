@@ -17,7 +17,8 @@ class ProbeCsv {
  public:
   // Every rank counts the rows; rank 0 writes them.
   explicit ProbeCsv(const Comm& comm) : comm_(comm) {}
-  // A new file holding the header (collective; InputError when it cannot be written).
+  // A new file holding the header (collective; InputError when it cannot be created,
+  // OutputError when the header cannot be written).
   void create(const std::filesystem::path& file, const std::vector<std::string>& columns);
   // A restart: continues `file` after its first `rows` data rows (rows < 0, a checkpoint that did
   // not count them: the complete rows with time <= `time`). When `file` does not exist, the rows
@@ -29,7 +30,8 @@ class ProbeCsv {
   // Rank 0 also writes the buffer out about once a second (a user can follow the run).
   void row(double time, long step, const std::vector<double>& values);
   long rows() const { return rows_; }
-  // Collective: the rows are in the file (InputError on every rank when a write failed).
+  // Collective: the rows are in the file (OutputError on every rank when a write failed: disk
+  // full, exit code 6).
   void flush();
   void close();
 

@@ -24,6 +24,12 @@ class Probes {
   // (`restarted`) the rows of an existing file up to `time` are kept. Without this call they
   // sample but write nothing (tests).
   void open_profiles(const std::filesystem::path& dir, bool restarted, double time);
+  // The first failed write of a profile file ("output: cannot write FILE: ..."), "" if none.
+  std::string write_error() {
+    for (auto& pr : profiles_)
+      if (auto e = pr->write_error(); !e.empty()) return e;
+    return "";
+  }
   // The last sample of the profile probe `name` (std::out_of_range when there is none).
   const ProfileBins& profile(const std::string& name) const;
   // Checkpoint state: the particle id each `tracked` probe follows (probes.<k>.tracked_id, k its

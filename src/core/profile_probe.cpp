@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "atomic_file.hpp"
 #include "probe_csv.hpp"
 
 namespace monosph {
@@ -111,8 +112,19 @@ void ProfileProbe<D>::open(const std::filesystem::path& dir, bool restarted, dou
     out_.open(path_);
     out_ << header << "\n";
   }
-  out_.flush();
-  if (!out_) throw InputError("output: cannot write " + path_.string());
+  if (!out_.is_open()) throw InputError("output: cannot write " + path_.string());
+  out_.flush();  // a failed write is reported by write_error(), on every rank at once
+}
+
+template <int D>
+std::string ProfileProbe<D>::write_error() {
+  if (!out_.is_open()) return "";
+  try {
+    check_stream(out_, path_);
+  } catch (const OutputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 template <int D>

@@ -33,8 +33,10 @@ class ProfileProbe {
   const ProfileBins& last() const { return bins_; }
   // Opens dir/profile_<name>.csv (rank 0 only; the others do nothing): a new file with its
   // header, or on a restart the existing file's rows with time <= `time` kept. InputError when it
-  // cannot be written.
+  // cannot be created.
   void open(const std::filesystem::path& dir, bool restarted, double time);
+  // "output: cannot write FILE: reason" once a write to the open file has failed, else "".
+  std::string write_error();
 
  private:
   double along(const Vec<D>& x) const;  // position along the axis (periodic axes wrapped)

@@ -31,6 +31,12 @@ struct RunAborted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Output that could not be written during a run (disk full, I/O error): one line naming the
+// file, exit code 6. (An output folder that cannot be written at the start is an InputError.)
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Pads a D-vector to 3 components (for output).
 template <int D>
 inline Vec3 pad3(const Vec<D>& v) {

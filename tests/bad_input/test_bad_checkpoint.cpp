@@ -66,6 +66,41 @@ class H5Edit {
     set_attr_int(dset, "ncomp", 1);
     set_attr_int(dset, "output", 0);
   }
+  // Rewrites a field as the writer did before the checksums: contiguous, no filter.
+  void make_contiguous(const std::string& dset) {
+    hid_t d = H5Dopen2(f_, dset.c_str(), H5P_DEFAULT);
+    hid_t t = H5Dget_type(d), sp = H5Dget_space(d);
+    std::vector<char> buf(H5Sget_simple_extent_npoints(sp) * H5Tget_size(t));
+    H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
+    std::int64_t ncomp = 0, output = 0;
+    auto get = [&](const char* name, std::int64_t* v) {
+      hid_t a = H5Aopen(d, name, H5P_DEFAULT);
+      H5Aread(a, H5T_NATIVE_INT64, v);
+      H5Aclose(a);
+    };
+    get("ncomp", &ncomp), get("output", &output);
+    H5Dclose(d);
+    remove(dset.c_str());
+    d = H5Dcreate2(f_, dset.c_str(), t, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()), 0) << dset;
+    H5Dclose(d), H5Sclose(sp), H5Tclose(t);
+    set_attr_int(dset.c_str(), "ncomp", ncomp);
+    set_attr_int(dset.c_str(), "output", output);
+  }
+  // The names in /fields.
+  std::vector<std::string> fields() {
+    std::vector<std::string> names;
+    hid_t g = H5Gopen2(f_, "/fields", H5P_DEFAULT);
+    H5Literate(
+        g, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr,
+        [](hid_t, const char* name, const H5L_info_t*, void* v) -> herr_t {
+          static_cast<std::vector<std::string>*>(v)->push_back(name);
+          return 0;
+        },
+        &names);
+    H5Gclose(g);
+    return names;
+  }
   // File offset of a dataset's first data byte (contiguous, or its first chunk).
   haddr_t data_offset(const char* dset) {
     hid_t d = H5Dopen2(f_, dset, H5P_DEFAULT);
@@ -99,11 +134,20 @@ class H5Edit {
         << dset;
     H5Sclose(mem), H5Sclose(sp), H5Dclose(d);
   }
+  // Writes (or creates) a scalar attribute of a 64-bit type like `type`.
   void attr(const char* obj, const char* name, hid_t type, const void* v) {
-    hid_t a = H5Aopen_by_name(f_, obj, name, H5P_DEFAULT, H5P_DEFAULT);
-    ASSERT_GE(a, 0) << obj << " " << name;
-    EXPECT_GE(H5Awrite(a, type, v), 0);
-    H5Aclose(a);
+    hid_t o = H5Oopen(f_, obj, H5P_DEFAULT);
+    ASSERT_GE(o, 0) << obj;
+    hid_t a = H5Aexists(o, name) > 0 ? H5Aopen(o, name, H5P_DEFAULT) : -1;
+    if (a < 0) {
+      hid_t sp = H5Screate(H5S_SCALAR);
+      a = H5Acreate2(o, name, type == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : H5T_STD_I64LE, sp,
+                     H5P_DEFAULT, H5P_DEFAULT);
+      H5Sclose(sp);
+    }
+    EXPECT_GE(a, 0) << obj << " " << name;
+    EXPECT_GE(H5Awrite(a, type, v), 0) << obj << " " << name;
+    H5Aclose(a), H5Oclose(o);
   }
   hid_t f_;
 };
@@ -140,19 +184,22 @@ struct Case {
 // Each case damages the final.h5 of a 3-step run of tests/scenes/grain_bounce.yaml (a solid block
 // with fixed rows, a rigid grain: two materials, two bodies, a cluster, a contact law).
 const Case kCases[] = {
-    {"material_1e6", [](auto f) { H5Edit(f).set_int("/fields/material", 7, 1000000); },
+    {"material_1e6",
+     [](auto f) { H5Edit(f).set_int("/fields/material", 7, 1000000); },
      {"material", "1000000"}},
-    {"material_negative", [](auto f) { H5Edit(f).set_int("/fields/material", 3, -1); },
+    {"material_negative",
+     [](auto f) { H5Edit(f).set_int("/fields/material", 3, -1); },
      {"material", "-1"}},
     {"body_99", [](auto f) { H5Edit(f).set_int("/fields/body", 5, 99); }, {"body", "99"}},
     {"body_negative", [](auto f) { H5Edit(f).set_int("/fields/body", 5, -3); }, {"body", "-3"}},
     {"phase_99", [](auto f) { H5Edit(f).set_int("/fields/phase", 9, 99); }, {"phase", "99"}},
     {"phase_negative", [](auto f) { H5Edit(f).set_int("/fields/phase", 9, -1); }, {"phase"}},
-    {"cluster_99", [](auto f) { H5Edit(f).set_int("/fields/cluster", 11, 99); },
-     {"cluster", "99"}},
-    {"cluster_below_minus_one", [](auto f) { H5Edit(f).set_int("/fields/cluster", 2, -7); },
+    {"cluster_99", [](auto f) { H5Edit(f).set_int("/fields/cluster", 11, 99); }, {"cluster", "99"}},
+    {"cluster_below_minus_one",
+     [](auto f) { H5Edit(f).set_int("/fields/cluster", 2, -7); },
      {"cluster", "-7"}},
-    {"boundary_99", [](auto f) { H5Edit(f).set_int("/fields/boundary", 2, 99); },
+    {"boundary_99",
+     [](auto f) { H5Edit(f).set_int("/fields/boundary", 2, 99); },
      {"boundary", "99"}},
     {"id_negative", [](auto f) { H5Edit(f).set_int("/fields/id", 4, -5); }, {"id", "-5"}},
     {"id_beyond_next_id", [](auto f) { H5Edit(f).set_int("/fields/id", 4, 1L << 40); }, {"id"}},
@@ -162,44 +209,64 @@ const Case kCases[] = {
        e.set_int("/fields/id", 4, 7), e.set_int("/fields/id", 5, 7);
      },
      {"id", "7"}},
-    {"velocity_nan", [](auto f) { H5Edit(f).set("/fields/velocity", 6, 1, kNaN); },
+    {"velocity_nan",
+     [](auto f) { H5Edit(f).set("/fields/velocity", 6, 1, kNaN); },
      {"velocity", "non-finite"}},
-    {"density_inf", [](auto f) { H5Edit(f).set("/fields/density", 6, 0, kInf); },
+    {"density_inf",
+     [](auto f) { H5Edit(f).set("/fields/density", 6, 0, kInf); },
      {"density", "non-finite"}},
-    {"position_nan", [](auto f) { H5Edit(f).set("/fields/position", 0, 0, kNaN); },
+    {"position_nan",
+     [](auto f) { H5Edit(f).set("/fields/position", 0, 0, kNaN); },
      {"position", "non-finite"}},
-    {"mass_minus_inf", [](auto f) { H5Edit(f).set("/fields/mass", 1, 0, -kInf); },
+    {"mass_minus_inf",
+     [](auto f) { H5Edit(f).set("/fields/mass", 1, 0, -kInf); },
      {"mass", "non-finite"}},
-    {"velocity_64_flipped_bytes", [](auto f) { flip_field(f, "/fields/velocity", 64); },
-     {"velocity", "checksum"}},
-    {"material_64_flipped_bytes", [](auto f) { flip_field(f, "/fields/material", 64); },
+    // Fletcher-32 sums 16-bit words modulo 65535, so a zero word flipped to 0xffff goes unseen:
+    // the velocity of the fixed rows (zero) then reads as NaN, which the finite check rejects.
+    {"velocity_64_flipped_bytes",
+     [](auto f) { flip_field(f, "/fields/velocity", 64); },
+     {"velocity"}},
+    {"position_64_flipped_bytes",
+     [](auto f) { flip_field(f, "/fields/position", 64); },
+     {"position", "checksum"}},
+    {"density_1_flipped_byte",
+     [](auto f) { flip_field(f, "/fields/density", 1); },
+     {"density", "checksum"}},
+    {"material_64_flipped_bytes",
+     [](auto f) { flip_field(f, "/fields/material", 64); },
      {"material", "checksum"}},
-    {"scene_text_flipped_bytes", [](auto f) { flip_field(f, "/meta/scene_yaml", 16); },
+    {"scene_text_flipped_bytes",
+     [](auto f) { flip_field(f, "/meta/scene_yaml", 16); },
      {"scene_yaml", "checksum"}},
     {"truncated_half", [](auto f) { fs::resize_file(f, fs::file_size(f) / 2); }, {}},
     {"truncated_to_zero", [](auto f) { fs::resize_file(f, 0); }, {"not a monosph checkpoint"}},
-    {"not_hdf5", [](auto f) { std::ofstream(f) << "dimension: 2\n"; },
+    {"not_hdf5",
+     [](auto f) { std::ofstream(f) << "dimension: 2\n"; },
      {"not a monosph checkpoint"}},
     {"missing_density", [](auto f) { H5Edit(f).remove("/fields/density"); }, {"density"}},
     {"missing_position", [](auto f) { H5Edit(f).remove("/fields/position"); }, {"position"}},
     {"missing_meta", [](auto f) { H5Edit(f).remove("/meta"); }, {"meta"}},
     {"missing_scene_text", [](auto f) { H5Edit(f).remove("/meta/scene_yaml"); }, {"scene_yaml"}},
-    {"density_row_count", [](auto f) { H5Edit(f).resize_field("/fields/density", 10); },
+    {"density_row_count",
+     [](auto f) { H5Edit(f).resize_field("/fields/density", 10); },
      {"density", "particle count"}},
-    {"velocity_ncomp", [](auto f) { H5Edit(f).set_attr_int("/fields/velocity", "ncomp", 3); },
+    {"velocity_ncomp",
+     [](auto f) { H5Edit(f).set_attr_int("/fields/velocity", "ncomp", 3); },
      {"velocity", "shape"}},
     {"time_nan", [](auto f) { H5Edit(f).set_attr("/meta", "time", kNaN); }, {"time"}},
     {"dt_negative", [](auto f) { H5Edit(f).set_attr("/meta", "dt", -1.0); }, {"dt"}},
     {"step_negative", [](auto f) { H5Edit(f).set_attr_int("/meta", "step", -4); }, {"step"}},
-    {"next_id_negative", [](auto f) { H5Edit(f).set_attr_int("/meta", "next_id", -1); },
+    {"next_id_negative",
+     [](auto f) { H5Edit(f).set_attr_int("/meta", "next_id", -1); },
      {"next_id"}},
-    {"dimension_5", [](auto f) { H5Edit(f).set_attr_int("/meta", "dimension", 5); },
-     {"dimension"}},
+    {"dimension_5", [](auto f) { H5Edit(f).set_attr_int("/meta", "dimension", 5); }, {"dimension"}},
     {"version_99", [](auto f) { H5Edit(f).set_attr_int("/", "version", 99); }, {"version"}},
     {"scalar_nan", [](auto f) { H5Edit(f).set_scalar("next_output", kNaN); }, {"next_output"}},
-    {"cluster_count_huge", [](auto f) { H5Edit(f).set_scalar("clusters.count", 1e18); },
+    {"cluster_count_huge",
+     [](auto f) { H5Edit(f).set_scalar("clusters.count", 1e18); },
      {"clusters.count"}},
-    {"cluster_count_nan", [](auto f) { H5Edit(f).set_scalar("clusters.count", kNaN); },
+    {"cluster_count_nan",
+     [](auto f) { H5Edit(f).set_scalar("clusters.count", kNaN); },
      {"clusters.count"}},
     {"a_directory",
      [](auto f) {
@@ -249,4 +316,43 @@ TEST(BadCheckpoint, UndamagedCheckpointRestarts) {
   const std::string out = out_dir("bad_ckpt_run_undamaged");
   auto r = run_limited("run --restart " + src + "/final.h5 --out " + out + " --steps 2");
   EXPECT_EQ(r.code, 0) << r.output;
+}
+
+// A checkpoint written before the checksums (contiguous fields, no filter) still restarts, and
+// the same run from it ends in the same state.
+TEST(BadCheckpoint, CheckpointWithoutChecksumsRestarts) {
+  const std::string src = out_dir("bad_ckpt_src_unchecked");
+  ASSERT_EQ(run_limited("run " + source("tests/scenes/grain_bounce.yaml") + " --out " + src +
+                        " --steps 3")
+                .code,
+            0);
+  fs::copy_file(src + "/final.h5", src + "/old.h5");
+  {
+    H5Edit e(src + "/old.h5");
+    for (const auto& f : e.fields()) e.make_contiguous("/fields/" + f);
+    EXPECT_EQ(e.data_offset("/fields/position") != HADDR_UNDEF, true);
+  }
+  const std::string a = out_dir("bad_ckpt_run_unchecked"), b = out_dir("bad_ckpt_run_checked");
+  auto r = run_limited("run --restart " + src + "/old.h5 --out " + a + " --steps 2");
+  ASSERT_EQ(r.code, 0) << r.output;
+  ASSERT_EQ(run_limited("run --restart " + src + "/final.h5 --out " + b + " --steps 2").code, 0);
+  expect_same_checkpoint(a + "/final.h5", b + "/final.h5");
+}
+
+// Under mpirun every rank refuses the damaged file alike (exit 2, no hang).
+TEST(BadCheckpoint, MpiRanksRefuseTogether) {
+  const std::string src = out_dir("bad_ckpt_src_mpi");
+  ASSERT_EQ(run_limited("run " + source("tests/scenes/grain_bounce.yaml") + " --out " + src +
+                        " --steps 3")
+                .code,
+            0);
+  H5Edit(src + "/final.h5").set_int("/fields/material", 7, 1000000);
+  const std::string out = out_dir("bad_ckpt_run_mpi");
+  auto r = run_command("timeout " + std::to_string(kTimeLimitSeconds) +
+                       " " MONOSPH_MPIEXEC
+                       " --allow-run-as-root --oversubscribe --bind-to none -x OMP_NUM_THREADS=1"
+                       " -np 2 " MONOSPH_BIN " run --restart " +
+                       src + "/final.h5 --out " + out + " --steps 2 --quiet 2>&1");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("material 1000000"), std::string::npos) << r.output;
 }

@@ -42,6 +42,7 @@ void make_random(Particles<D>& p, std::size_t n, unsigned seed) {
       for (auto& x : f.ints) x = static_cast<std::int64_t>(rng());
     }
   }
+  for (std::size_t i = 0; i < n; ++i) p.id()[i] = static_cast<std::int64_t>(n - 1 - i);  // distinct
   if (n > 2) {
     p.rho()[0] = std::numeric_limits<double>::denorm_min();
     p.rho()[1] = -0.0;
@@ -222,8 +223,9 @@ TEST(Checkpoint, UnwritableThrows) {
   std::ofstream(file) << "x";
   Particles<2> p;
   p.append(2);
-  EXPECT_THROW(write_checkpoint(file / "c.h5", p, CheckpointMeta{}), InputError);
-  EXPECT_THROW(write_checkpoint(tmp.path / "no" / "dir" / "c.h5", p, CheckpointMeta{}), InputError);
+  EXPECT_THROW(write_checkpoint(file / "c.h5", p, CheckpointMeta{}), OutputError);
+  EXPECT_THROW(write_checkpoint(tmp.path / "no" / "dir" / "c.h5", p, CheckpointMeta{}),
+               OutputError);
 }
 
 }  // namespace
