@@ -7,7 +7,6 @@
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
-#include <vtkObject.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkTypeInt64Array.h>
@@ -227,8 +226,6 @@ VtkSeries<D>::VtkSeries(fs::path dir, std::string basename)
   // (vtkSMPTools.h does not compile as C++20, so the backend is chosen through its variable,
   // read when VTK first uses SMP; a user's own choice is kept.)
   setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 0);
-  // A failed write is reported in one line below, not by a dozen lines of VTK's own.
-  vtkObject::GlobalWarningDisplayOff();
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) cannot_write(dir_, ec.message());
