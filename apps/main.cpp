@@ -85,8 +85,7 @@ void check_restart_overrides(const std::vector<std::string>& sets) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  monosph::reexec_with_short_spin(argv);  // before MPI and OpenMP start
-  monosph::Comm::init(&argc, &argv);      // under mpirun only
+  monosph::Comm::init(&argc, &argv);  // under mpirun only
   const int code = run_main(argc, argv);
   monosph::Comm::finalize();
   return code;

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,13 +61,6 @@ JobThreads jobs_and_threads(const char* verb, int jobs, int threads) {
                "monosph: warning: {}: --threads {} lowered to {} ({} jobs on {} usable CPUs)\n",
                verb, threads, most, r.jobs, cpus);
   return r;
-}
-
-void reexec_with_short_spin(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
-  if (setenv("GOMP_SPINCOUNT", kSpinCount, 1) != 0) return;
-  execv("/proc/self/exe", argv);  // returns only on failure: go on with libgomp's default
-  unsetenv("GOMP_SPINCOUNT");
 }
 
 }  // namespace monosph

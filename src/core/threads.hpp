@@ -11,11 +11,6 @@ int usable_cpus();
 // CPUs make every parallel region wait on descheduled threads (measured: 14x slower).
 void set_default_threads();
 
-// OpenMP threads that wait at a barrier spin before they sleep; libgomp spins 300,000 times by
-// default, milliseconds in which a thread whose partner was descheduled (another process on the
-// machine) holds its core. libgomp reads the setting once, when it is loaded, so when neither
-// OMP_WAIT_POLICY nor GOMP_SPINCOUNT is set the process re-executes itself once with
-// GOMP_SPINCOUNT = kSpinCount (docs/performance.md). Returns only if it did not re-execute.
 // Jobs and threads per job for `study` and `stability` (`verb`): never more threads in total
 // than usable_cpus(). `jobs` is lowered to the CPUs and `threads` (0: CPUs / jobs) to CPUs / jobs,
 // each with a one-line warning on stderr when the request is lowered.
@@ -23,8 +18,5 @@ struct JobThreads {
   int jobs, threads;
 };
 JobThreads jobs_and_threads(const char* verb, int jobs, int threads);
-
-inline constexpr const char* kSpinCount = "10000";
-void reexec_with_short_spin(char** argv);
 
 }  // namespace monosph
