@@ -21,6 +21,8 @@
 #include "core/probes.hpp"
 #include "core/scene.hpp"
 #include "core/simulation.hpp"
+#include "core/thread_governor.hpp"
+#include "core/threads.hpp"
 #include "output_folder.hpp"
 
 namespace fs = std::filesystem;
@@ -252,6 +254,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   std::string status = "completed";
   const auto t0 = Clock::now();
   const long step0 = sim.step();
+  const int threads = omp_get_max_threads();
+  ThreadGovernor governor(usable_cpus(), threads);
   try {
     while (sim.time() < scene.end_time - eps) {
       // Land exactly on checkpoint times so that restarts reproduce the run.
@@ -272,6 +276,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
         checkpoint(out / "checkpoint.h5");
       }
       progress.update(sim.time(), sim.step());
+      governor.update();
       if (opt.max_steps > 0 && sim.step() - step0 >= opt.max_steps) break;
       if (const long sig = comm.max(static_cast<long>(g_signal)); sig != 0) {
         status = "interrupted";
@@ -305,6 +310,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   res.neighbour_builds = sim.neighbours().builds();
   res.configuration_updates = sim.configuration_updates();
   res.neighbour_seconds = sim.neighbours().build_seconds();
+  res.mean_threads = governor.mean_threads();
   res.pass_seconds = sim.pass_seconds();
   if (!opt.write_output) return res;
   check_csv();
@@ -350,7 +356,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["simulated_time"] = sim.time();
   js["wall_seconds"] = wall;
   js["particle_steps_per_second"] = res.particle_steps_per_second;
-  js["threads"] = omp_get_max_threads();
+  js["threads"] = threads;
+  js["threads_mean"] = governor.mean_threads();  // lower while other processes used the CPUs
   js["ranks"] = comm.size();
   if (dec) {
     js["halo_bytes_per_step"] = mpi["halo_bytes_per_step"];
@@ -433,10 +440,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     throw;
   }
   const std::string done = fmt::format(
-      "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} threads",
+      "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} "
+      "threads{}",
       status == "completed" || status == "interrupted" ? status : "stopped", res.particles,
       res.steps, wall, res.particle_steps_per_second,
-      comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "", omp_get_max_threads());
+      comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "", threads,
+      governor.changes()
+          ? fmt::format(" (mean {:.2f}: other processes were busy)", governor.mean_threads())
+          : "");
   if (opt.quiet)  // the one line a script's log keeps: status and where the summary is
     fmt::print(stderr, "{}; summary {}\n", done, (out / "summary.json").string());
   if (!opt.quiet) {

@@ -24,6 +24,7 @@ struct RunResult {
   long steps = 0;
   double wall_seconds = 0, particle_steps_per_second = 0, neighbour_seconds = 0;
   int neighbour_builds = 0;
+  double mean_threads = 0;  // lower than the threads asked for while other processes were busy
   long configuration_updates = 0;  // pair-geometry updates (fewer with dual-criteria steps)
   std::map<std::string, double> pass_seconds;  // wall seconds of each pass (Simulation)
 };

@@ -1,6 +1,18 @@
-// Thread defaults on a shared machine: study and stability never start more threads than CPUs.
+// Threads on a shared machine: study and stability never start more threads than CPUs, and a run
+// lowers its thread count while other processes keep the CPUs busy.
 #include <gtest/gtest.h>
+#include <omp.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "core/thread_governor.hpp"
 #include "core/threads.hpp"
 
 using namespace monosph;
@@ -23,4 +35,105 @@ TEST(Threads, JobsTimesThreadsNeverExceedTheCpus) {
       }
     }
   }
+}
+
+// The governor follows the other processes' load: it lowers the thread count after two agreeing
+// samples, raises it after ten, and restores the count asked for at the end.
+TEST(ThreadGovernor, FollowsTheLoadOfOtherProcesses) {
+  const int before = omp_get_max_threads();
+  int others = 0;
+  {
+    ThreadGovernor g(
+        4, 4, [&] { return others; }, std::chrono::milliseconds(0));
+    auto run = [&](int n) {
+      for (int i = 0; i < n; ++i) g.update();
+    };
+    run(5);
+    EXPECT_EQ(g.threads(), 4);
+    others = 2;  // two busy CPUs: two threads
+    run(1);
+    EXPECT_EQ(g.threads(), 4);
+    run(1);
+    EXPECT_EQ(g.threads(), 2);
+    EXPECT_EQ(omp_get_max_threads(), 2);
+    others = 7;  // more busy threads than CPUs: one thread, never zero
+    run(2);
+    EXPECT_EQ(g.threads(), 1);
+    others = 0;  // the others have gone: back to four after ten samples
+    run(9);
+    EXPECT_EQ(g.threads(), 1);
+    run(1);
+    EXPECT_EQ(g.threads(), 4);
+    for (int i = 0; i < 40; ++i) {  // a process that runs now and then: lowered, not raised
+      others = i % 3 == 0 ? 0 : 3;
+      g.update();
+    }
+    EXPECT_EQ(g.threads(), 1);
+    others = -1;  // /proc unreadable: kept
+    run(20);
+    EXPECT_EQ(g.threads(), 1);
+    EXPECT_EQ(g.changes(), 4);
+    EXPECT_GT(g.mean_threads(), 1.0);
+    EXPECT_LT(g.mean_threads(), 4.0);
+  }
+  EXPECT_EQ(omp_get_max_threads(), 4);  // restored
+  omp_set_num_threads(before);
+}
+
+namespace {
+
+// `n` child processes that spin until they are killed.
+struct BusyChildren {
+  std::vector<pid_t> pids;
+  explicit BusyChildren(int n) {
+    for (int i = 0; i < n; ++i) {
+      const pid_t pid = fork();
+      if (pid == 0) {
+        volatile unsigned long x = 0;
+        for (;;) x = x + 1;
+      }
+      if (pid > 0) pids.push_back(pid);
+    }
+  }
+  ~BusyChildren() {
+    for (pid_t p : pids) kill(p, SIGKILL);
+    for (pid_t p : pids) waitpid(p, nullptr, 0);
+  }
+};
+
+// Samples of other_runnable_threads() over about 0.2 s, sorted.
+std::vector<int> samples() {
+  std::vector<int> s;
+  for (int i = 0; i < 20; ++i) {
+    s.push_back(other_runnable_threads());
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+}  // namespace
+
+TEST(ThreadGovernor, CountsOtherProcessesNotItsOwnThreads) {
+  ASSERT_GE(other_runnable_threads(), 0) << "/proc/loadavg or /proc/self/task unreadable";
+  {
+    BusyChildren busy(2);
+    ASSERT_EQ(busy.pids.size(), 2u);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const auto s = samples();
+    EXPECT_GE(s[s.size() / 2], 2) << "median of the other runnable threads with 2 busy children";
+  }
+  // Three busy threads of this process are not other processes: the quietest sample stays below 3
+  // (the other tests ctest runs beside this one may add one or two).
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> own;
+  for (int i = 0; i < 3; ++i)
+    own.emplace_back([&] {
+      while (!stop.load(std::memory_order_relaxed)) {
+      }
+    });
+  const auto s = samples();
+  stop = true;
+  for (auto& t : own) t.join();
+  EXPECT_LT(s.front(), 3);
 }
