@@ -37,7 +37,7 @@ TEST(Threads, JobsTimesThreadsNeverExceedTheCpus) {
   }
 }
 
-// The governor follows the other processes' load: it lowers the thread count after two agreeing
+// The governor follows the other processes' load: it lowers the thread count after three agreeing
 // samples, raises it after ten, and restores the count asked for at the end.
 TEST(ThreadGovernor, FollowsTheLoadOfOtherProcesses) {
   const int before = omp_get_max_threads();
@@ -50,14 +50,19 @@ TEST(ThreadGovernor, FollowsTheLoadOfOtherProcesses) {
     };
     run(5);
     EXPECT_EQ(g.threads(), 4);
-    others = 2;  // two busy CPUs: two threads
+    others = 2;  // two busy CPUs: two threads after three samples
+    run(2);
+    EXPECT_EQ(g.threads(), 4);
+    others = 0;  // a blip: no change
     run(1);
+    others = 2;
+    run(2);
     EXPECT_EQ(g.threads(), 4);
     run(1);
     EXPECT_EQ(g.threads(), 2);
     EXPECT_EQ(omp_get_max_threads(), 2);
     others = 7;  // more busy threads than CPUs: one thread, never zero
-    run(2);
+    run(3);
     EXPECT_EQ(g.threads(), 1);
     others = 0;  // the others have gone: back to four after ten samples
     run(9);
@@ -65,7 +70,7 @@ TEST(ThreadGovernor, FollowsTheLoadOfOtherProcesses) {
     run(1);
     EXPECT_EQ(g.threads(), 4);
     for (int i = 0; i < 40; ++i) {  // a process that runs now and then: lowered, not raised
-      others = i % 3 == 0 ? 0 : 3;
+      others = i % 4 == 0 ? 0 : 3;
       g.update();
     }
     EXPECT_EQ(g.threads(), 1);

@@ -43,6 +43,7 @@ inline std::string source(const std::string& rel) {
 inline std::string out_dir(const std::string& name) {
   auto d = std::filesystem::path(MONOSPH_TEST_OUT) / name;
   std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d.parent_path());  // for a log beside it (DIR.log)
   return d.string();
 }
 

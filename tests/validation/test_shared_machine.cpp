@@ -1,0 +1,64 @@
+// A run on a shared machine: with other processes holding every CPU, a run asked for two threads
+// lowers itself to one, raises the count again when they go, and ends with the same state as a
+// run on one thread (results do not depend on the thread count, also when it changes mid-run).
+#include <gtest/gtest.h>
+
+#include "child_process.hpp"
+#include "core/threads.hpp"
+#include "run_helpers.hpp"
+
+namespace monosph::test {
+namespace {
+
+// `n` child processes that spin until they are stopped.
+struct BusyChildren {
+  std::vector<pid_t> pids;
+  explicit BusyChildren(int n) {
+    for (int i = 0; i < n; ++i) {
+      const pid_t pid = fork();
+      if (pid == 0) {
+        volatile unsigned long x = 0;
+        for (;;) x = x + 1;
+      }
+      if (pid > 0) pids.push_back(pid);
+    }
+  }
+  void stop() {
+    for (pid_t p : pids) kill(p, SIGKILL);
+    for (pid_t p : pids) waitpid(p, nullptr, 0);
+    pids.clear();
+  }
+  ~BusyChildren() { stop(); }
+};
+
+TEST(SharedMachine, TwoThreadsDropToOneWhileOtherProcessesHoldTheCpus) {
+  const int cpus = usable_cpus();
+  if (cpus < 2) GTEST_SKIP() << "one usable CPU: a run has one thread anyway";
+  // The dam break, 4658 particles, 4000 steps: about 9 s on one thread of the 2-core machine.
+  const std::string args = "run " + source("cases/dam_break/scene.yaml") +
+                           " --steps 4000 --set output.every=0 --quiet --threads ";
+  const std::string shared = out_dir("shared_machine_two"), alone = out_dir("shared_machine_one");
+  BusyChildren busy(cpus);
+  ASSERT_EQ(static_cast<int>(busy.pids.size()), cpus);
+  Child run =
+      start_child(std::string(MONOSPH_BIN) + " " + args + "2 --out " + shared, shared + ".log");
+  // Once it steps (its first probe row is written), give it two seconds under load, then free the
+  // CPUs: it has lowered to one thread after 60 ms and raises again 0.2 s after they are free.
+  ASSERT_TRUE(wait_for_file(run, shared + "/probes.csv")) << file_text(shared + ".log");
+  pause_ms(2000);
+  busy.stop();
+  ASSERT_EQ(wait_exit(run), 0) << file_text(shared + ".log");
+  const auto js = summary(shared);
+  EXPECT_EQ(js["threads"], 2);
+  const double mean = js["threads_mean"];
+  EXPECT_GT(mean, 1.05) << "not raised again after the other processes went";
+  EXPECT_LT(mean, 1.95) << "not lowered while " << cpus << " other processes were busy";
+  EXPECT_NE(file_text(shared + ".log").find("other processes were busy"), std::string::npos);
+  // Bit for bit the run on one thread.
+  ASSERT_EQ(run_monosph(args + "1 --out " + alone).code, 0);
+  EXPECT_EQ(summary(alone)["threads_mean"], 1.0);
+  expect_same_checkpoint(alone + "/final.h5", shared + "/final.h5");
+}
+
+}  // namespace
+}  // namespace monosph::test
