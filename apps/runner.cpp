@@ -138,6 +138,9 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   RunResult res;
   const fs::path out = opt.out.empty() ? fs::path("out") / scene.name : fs::path(opt.out);
   SignalGuard signals;  // from the start: a signal during the set-up stops after the first step
+  // Before the set-up, whose parallel regions would also wait for descheduled threads.
+  const int threads = omp_get_max_threads();
+  ThreadGovernor governor(usable_cpus(), threads);
   // Locked before anything is read or written there (and cleared of an earlier run's results).
   std::unique_ptr<OutputFolder> folder;
   if (opt.write_output)
@@ -254,8 +257,6 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   std::string status = "completed";
   const auto t0 = Clock::now();
   const long step0 = sim.step();
-  const int threads = omp_get_max_threads();
-  ThreadGovernor governor(usable_cpus(), threads);
   try {
     while (sim.time() < scene.end_time - eps) {
       // Land exactly on checkpoint times so that restarts reproduce the run.

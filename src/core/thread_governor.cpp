@@ -59,7 +59,11 @@ ThreadGovernor::ThreadGovernor(int cpus, int most, Sampler others, std::chrono::
       threads_(most_),
       others_(std::move(others)),
       every_(every),
-      next_(std::chrono::steady_clock::now() + every) {}
+      next_(std::chrono::steady_clock::now() + every) {
+  // Three samples at once: a run started beside busy processes starts with fewer threads.
+  if (most_ > 1)
+    for (int k = 0; k < 3; ++k) sample();
+}
 
 ThreadGovernor::~ThreadGovernor() {
   if (threads_ != most_) omp_set_num_threads(most_);

@@ -18,7 +18,8 @@ int other_runnable_threads();
 class ThreadGovernor {
  public:
   using Sampler = std::function<int()>;  // other runnable threads, -1: unknown
-  // `cpus`: the CPUs this process may use; `most`: the thread count asked for.
+  // `cpus`: the CPUs this process may use; `most`: the thread count asked for. Takes three samples
+  // at once, so that a run started beside busy processes starts lowered.
   ThreadGovernor(int cpus, int most, Sampler others = other_runnable_threads,
                  std::chrono::milliseconds every = std::chrono::milliseconds(20));
   ~ThreadGovernor();  // restores `most`

@@ -82,6 +82,12 @@ TEST(ThreadGovernor, FollowsTheLoadOfOtherProcesses) {
     EXPECT_LT(g.mean_threads(), 4.0);
   }
   EXPECT_EQ(omp_get_max_threads(), 4);  // restored
+  {  // started beside three busy processes: one thread from the start
+    ThreadGovernor g(4, 4, [] { return 3; });
+    EXPECT_EQ(g.threads(), 1);
+    EXPECT_EQ(omp_get_max_threads(), 1);
+  }
+  EXPECT_EQ(omp_get_max_threads(), 4);
   omp_set_num_threads(before);
 }
 

@@ -1,6 +1,8 @@
 // A run on a shared machine: with other processes holding every CPU, a run asked for two threads
-// lowers itself to one, raises the count again when they go, and ends with the same state as a
-// run on one thread (results do not depend on the thread count, also when it changes mid-run).
+// lowers itself to one and ends with the same state as a run on one thread (results do not depend
+// on the thread count, also when it changes mid-run). Raising it again is tested with a simulated
+// load (unit test ThreadGovernor.FollowsTheLoadOfOtherProcesses): here the tests ctest runs beside
+// this one may keep a CPU busy.
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
@@ -43,16 +45,15 @@ TEST(SharedMachine, TwoThreadsDropToOneWhileOtherProcessesHoldTheCpus) {
   Child run =
       start_child(std::string(MONOSPH_BIN) + " " + args + "2 --out " + shared, shared + ".log");
   // Once it steps (its first probe row is written), give it two seconds under load, then free the
-  // CPUs: it has lowered to one thread after 60 ms and raises again 0.2 s after they are free.
+  // CPUs (it may raise its thread count again 0.2 s later if nothing else runs).
   ASSERT_TRUE(wait_for_file(run, shared + "/probes.csv")) << file_text(shared + ".log");
   pause_ms(2000);
   busy.stop();
   ASSERT_EQ(wait_exit(run), 0) << file_text(shared + ".log");
   const auto js = summary(shared);
   EXPECT_EQ(js["threads"], 2);
-  const double mean = js["threads_mean"];
-  EXPECT_GT(mean, 1.05) << "not raised again after the other processes went";
-  EXPECT_LT(mean, 1.95) << "not lowered while " << cpus << " other processes were busy";
+  EXPECT_LT(js["threads_mean"].get<double>(), 1.95)
+      << "not lowered while " << cpus << " other processes were busy";
   EXPECT_NE(file_text(shared + ".log").find("other processes were busy"), std::string::npos);
   // Bit for bit the run on one thread.
   ASSERT_EQ(run_monosph(args + "1 --out " + alone).code, 0);
