@@ -5,6 +5,7 @@
 #include "core/sph_equations.hpp"
 #include "coupling/contact_module.hpp"
 #include "coupling/lubrication_module.hpp"
+#include "coupling/solid_contact_module.hpp"
 #include "fluid/fluid_module.hpp"
 #include "rigid/cluster_module.hpp"
 #include "rigid/rigid_surface_module.hpp"
@@ -35,6 +36,7 @@ void assemble_modules(Simulation<D>& sim) {
   if (enabled("solid")) sim.add_module(std::make_unique<SolidModule<D>>(sim));
   if (enabled("rigid")) sim.add_module(std::make_unique<RigidSurfaceModule<D>>(sim));
   if (enabled("contact")) sim.add_module(std::make_unique<ContactModule<D>>(sim));
+  if (enabled("solid_contact")) sim.add_module(std::make_unique<SolidContactModule<D>>(sim));
   if (enabled("lubrication")) sim.add_module(std::make_unique<LubricationModule<D>>(sim));
   // Last: it sums every force its particles received (fluid, contact, surfaces, body force).
   if (enabled("clusters")) sim.add_module(std::make_unique<ClusterModule<D>>(sim));

@@ -16,6 +16,7 @@
 #include "core/checkpoint.hpp"
 #include "core/checkpoint_check.hpp"
 #include "core/memory.hpp"
+#include "core/motion_range.hpp"
 #include "core/output_vtk.hpp"
 #include "core/probe_csv.hpp"
 #include "core/probes.hpp"
@@ -251,6 +252,10 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
     next_probe = scene.probe_every;
+  }
+  if (!restart_meta) {  // one line at the start: solid bodies that would pass through each other
+    const std::string w = untouched_bodies_warning(sim);
+    if (root && !w.empty()) fmt::print(stderr, "monosph: warning: {}\n", w);
   }
   Progress progress(opt.quiet || !root, sim.time(), scene.end_time);
   progress.start_steps(sim.step());

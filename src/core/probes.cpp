@@ -106,6 +106,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
     }
     if (s.type.rfind("rigid_", 0) == 0)
       throw InputError(where + ".type: '" + s.type + "' needs the clusters module (a rigid body)");
+    if (s.type.rfind("solid_contact_", 0) == 0)
+      throw InputError(where + ".type: '" + s.type + "' needs a solid_contact section");
     if (s.type.rfind("lubrication_", 0) == 0)
       throw InputError(where + ".type: '" + s.type + "' needs a lubrication section");
     if (s.type == "fluid_force")

@@ -25,8 +25,8 @@ int Scene::material_index(const std::string& n) const {
 namespace {
 
 // Physics modules for scenes (switched on by the bodies and surfaces that need them).
-const std::vector<std::string> kModules = {"solid",    "rigid",   "fluid",
-                                           "clusters", "contact", "lubrication"};
+const std::vector<std::string> kModules = {"solid",   "rigid",       "fluid",        "clusters",
+                                           "contact", "lubrication", "solid_contact"};
 
 void read_kernel(MapReader& r, Scene& s) {
   if (!r.has("kernel")) return void(r.optional("kernel"));
@@ -95,10 +95,12 @@ void read_modules(MapReader& r, Scene& s) {
   if (!r.has("modules")) return void(r.optional("modules"));
   for (const auto& m : r.strings("modules")) {
     if (std::find(kModules.begin(), kModules.end(), m) == kModules.end())
-      scene_error("modules",
-                  "unknown module '" + m +
-                      "' (available: solid, rigid, fluid, clusters, contact, lubrication; they are "
-                      "switched on by the bodies and surfaces that need them)");
+      scene_error(
+          "modules",
+          "unknown module '" + m +
+              "' (available: solid, rigid, fluid, clusters, contact, lubrication, solid_contact; "
+              "they are "
+              "switched on by the bodies and surfaces that need them)");
     s.modules.push_back(m);
   }
 }
@@ -158,6 +160,7 @@ Scene read_scene(const std::string& text, const std::vector<std::string>& overri
   read_surfaces(r, s, root, origin);
   read_contact(r, s);
   read_lubrication(r, s);
+  read_solid_contact(r, s);
 
   s.body_force = r.has("body_force") ? r.vector("body_force", dim)
                                      : (r.optional("body_force"), Point(dim, 0.0));

@@ -127,6 +127,15 @@ struct ContactSpec {
   double p1 = 12, p2 = 4;     // lennard_jones exponents
 };
 
+// Contact between solid bodies of different continua (section `solid_contact`; src/coupling):
+// Hertz spheres of diameter distance * dp, repulsive only, with Coulomb friction.
+struct SolidContactSpec {
+  bool on = false;
+  double distance = 1.0;  // contact diameter d_c, fraction of dp
+  double damping = 0;     // normal dashpot, ratio of critical
+  double friction = 0;    // Coulomb coefficient of the pair's sliding
+};
+
 // Sub-grid lubrication between rigid clusters and surfaces (section `lubrication`; src/coupling).
 struct LubricationSpec {
   bool on = false;
@@ -213,6 +222,7 @@ struct Scene {
   std::vector<SurfaceSpec> surfaces;  // rigid surfaces (section `surfaces`)
   ContactSpec contact;                // section `contact`
   LubricationSpec lubrication;        // section `lubrication`
+  SolidContactSpec solid_contact;     // section `solid_contact`
   std::vector<std::string> modules;
   Point body_force;
   double end_time = 0;

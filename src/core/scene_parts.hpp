@@ -34,6 +34,7 @@ std::vector<std::string> expressions(MapReader& r, const std::string& key, int d
 void read_surfaces(MapReader& root, Scene& s, YAML::Node& tree, const std::string& origin);
 void read_contact(MapReader& root, Scene& s);
 void read_lubrication(MapReader& root, Scene& s);
+void read_solid_contact(MapReader& root, Scene& s);
 
 // scene_sections.cpp: `time_step`, `guards`, `output`, `reference`, `checks`, `limits`.
 void read_time_step(MapReader& root, Scene& s);

@@ -44,7 +44,10 @@ const std::vector<std::string> kTypes = {"kinetic_energy",
                                          "profile",
                                          "contact_energy",
                                          "lubrication_force",
-                                         "lubrication_gap"};
+                                         "lubrication_gap",
+                                         "solid_contact_pairs",
+                                         "solid_contact_force",
+                                         "solid_contact_neighbours"};
 
 bool is_one_of(const std::string& type, std::initializer_list<const char*> types) {
   return std::any_of(types.begin(), types.end(), [&](const char* t) { return type == t; });
@@ -58,8 +61,9 @@ bool is_rigid_type(const std::string& type) {
 int column_count(const std::string& type, int dim) {
   if (type == "profile") return 0;
   if (type == "rigid_angular_velocity") return dim == 3 ? 3 : 1;
-  if (is_one_of(type, {"momentum", "reaction_force", "surface_force", "surface_displacement",
-                       "rigid_centre", "rigid_velocity", "lubrication_force"}))
+  if (is_one_of(type,
+                {"momentum", "reaction_force", "surface_force", "surface_displacement",
+                 "rigid_centre", "rigid_velocity", "lubrication_force", "solid_contact_force"}))
     return dim;
   return 1;
 }
@@ -146,6 +150,8 @@ void check_body(const std::string& p, const ProbeSpec& ps, const Scene& s) {
     scene_error(p + ".body", "contact_energy is the energy of all contacts; it takes no body");
   const bool rigid = is_rigid_type(ps.type);
   if (rigid && ps.body.empty()) scene_error(p + ".body", "missing (the name of a rigid body)");
+  if (ps.type == "solid_contact_force" && ps.body.empty())
+    scene_error(p + ".body", "missing (the name of a solid body: the contact force on it)");
   if (ps.body.empty()) return;
   auto it = std::find_if(s.bodies.begin(), s.bodies.end(),
                          [&](const BodySpec& b) { return b.name == ps.body; });

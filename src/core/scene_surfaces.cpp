@@ -1,4 +1,5 @@
-// The scene sections `surfaces` (rigid surfaces, MMB Sect. 3), `contact` and `lubrication`.
+// The scene sections `surfaces` (rigid surfaces, MMB Sect. 3), `contact`, `lubrication` and
+// `solid_contact`.
 #include <cmath>
 #include <fstream>
 
@@ -195,6 +196,34 @@ void read_contact(MapReader& r, Scene& s) {
       if (c.has(k)) scene_error(std::string("contact.") + k, "applies to law lennard_jones only");
   }
   c.finish();
+}
+
+// Contact between solid bodies of different continua (src/coupling/solid_contact_module.hpp):
+// needs two solid bodies that are not one continuum; the contact diameter lies within the kernel
+// support (h >= dp, support >= 2h).
+void read_solid_contact(MapReader& r, Scene& s) {
+  if (!r.has("solid_contact")) return void(r.optional("solid_contact"));
+  MapReader c(r.node("solid_contact"), "solid_contact");
+  auto& sc = s.solid_contact;
+  sc.on = true;
+  sc.distance = c.positive("distance", 1.0);
+  if (sc.distance > 2)
+    scene_error("solid_contact.distance",
+                "must lie in (0, 2] (the contact diameter in dp, within the kernel support)");
+  sc.damping = c.non_negative("damping", 0.0);
+  sc.friction = c.non_negative("friction", 0.0);
+  c.finish();
+  std::vector<std::string> continua;
+  for (const auto& b : s.bodies)
+    if (b.phase == "solid" &&
+        std::find(continua.begin(), continua.end(), b.continuum) == continua.end())
+      continua.push_back(b.continuum);
+  if (continua.size() < 2)
+    scene_error("solid_contact",
+                "needs two solid bodies of different continua (bodies of one continuum meet "
+                "through the SPH equations)");
+  if (std::find(s.modules.begin(), s.modules.end(), "solid_contact") == s.modules.end())
+    s.modules.push_back("solid_contact");
 }
 
 }  // namespace monosph

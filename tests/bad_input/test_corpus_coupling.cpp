@@ -152,6 +152,29 @@ const SceneCase kProbeCases[] = {
      "checks[1] (mass_kept).name: duplicate check name"},
 };
 
+// Contact between solid bodies (`solid_contact`): kSolid3d has three solid bodies of three
+// continua, kFluid one solid body.
+const SceneCase kSolidContactCases[] = {
+    {"solid_contact_key_typo", kSolid3d, "", "solid_contact: {distance: 1.0, frction: 0.3}\n",
+     "solid_contact.frction: unknown key"},
+    {"solid_contact_distance_zero", kSolid3d, "", "solid_contact: {distance: 0}\n",
+     "solid_contact.distance: must be positive"},
+    {"solid_contact_distance_beyond_support", kSolid3d, "", "solid_contact: {distance: 3}\n",
+     "solid_contact.distance: must lie in (0, 2]"},
+    {"solid_contact_friction_negative", kSolid3d, "", "solid_contact: {friction: -0.2}\n",
+     "solid_contact.friction: must not be negative"},
+    {"solid_contact_damping_text", kSolid3d, "", "solid_contact: {damping: high}\n",
+     "solid_contact.damping: expected a number"},
+    {"solid_contact_one_continuum", kFluid, "", "solid_contact: {distance: 1.0}\n",
+     "solid_contact: needs two solid bodies of different continua"},
+    {"solid_contact_force_without_body", kSolid3d, "",
+     "solid_contact: {}\nprobes:\n  list:\n    - {name: f, type: solid_contact_force}\n",
+     "probes.list[0].body: missing (the name of a solid body"},
+    {"solid_contact_probe_without_section", kFluid, kFluidProbes,
+     "    - {name: ke, type: kinetic_energy}\n    - {name: sc, type: solid_contact_pairs}",
+     "probes.list[1].type: 'solid_contact_pairs' needs a solid_contact section"},
+};
+
 class CorpusCoupling : public ::testing::TestWithParam<SceneCase> {};
 TEST_P(CorpusCoupling, ExitsWithCode2AndOneLineNamingTheKey) {
   run_scene_case(GetParam());
@@ -159,5 +182,7 @@ TEST_P(CorpusCoupling, ExitsWithCode2AndOneLineNamingTheKey) {
 auto case_name = [](const auto& info) { return std::string(info.param.name); };
 INSTANTIATE_TEST_SUITE_P(Surfaces, CorpusCoupling, ::testing::ValuesIn(kSurfaceCases), case_name);
 INSTANTIATE_TEST_SUITE_P(Probes, CorpusCoupling, ::testing::ValuesIn(kProbeCases), case_name);
+INSTANTIATE_TEST_SUITE_P(SolidContact, CorpusCoupling, ::testing::ValuesIn(kSolidContactCases),
+                         case_name);
 
 }  // namespace

@@ -92,6 +92,14 @@ TEST(Mpi, PeriodicAcousticWave3dMatchesSerial) {
   serial_vs_ranks(c, {2, 3, 4});
 }
 
+TEST(Mpi, SolidContactOfTwoSpheresMatchesSerial) {
+  // Two Eulerian spheres of different continua in contact (solid_contact) from step 2 on, cut
+  // between them by the slab decomposition: the pairs across the rank boundary see ghosts.
+  Case c{"solid_contact", "tests/scenes/sphere_collision.yaml",
+         "bodies.0.formulation=eulerian bodies.1.formulation=eulerian", 3};
+  serial_vs_ranks(c, {2});
+}
+
 TEST(Mpi, GrainSettlingMatchesSerial) {
   serial_vs_ranks({"settle", "tests/scenes/grain_in_tank.yaml", ""}, {2});
 }
