@@ -65,6 +65,23 @@ void read_domain(MapReader& r, Scene& s) {
   } else {
     d.optional("periodic");
   }
+  // Symmetry planes at domain faces (mirror ghost particles, src/core/mirror.hpp).
+  s.mirror_min.assign(dim, false);
+  s.mirror_max.assign(dim, false);
+  if (d.has("mirror")) {
+    for (const auto& f : d.strings("mirror")) {
+      const int a = f.size() == 5 && f[0] >= 'x' && f[0] <= 'z' ? f[0] - 'x' : -1;
+      const std::string side = f.size() == 5 ? f.substr(1) : "";
+      if (a < 0 || a >= dim || (side != "_min" && side != "_max"))
+        scene_error("domain.mirror", "'" + f + "' is not a face of the " + std::to_string(dim) +
+                                         "D domain (allowed: x_min, x_max, y_min, y_max" +
+                                         (dim == 3 ? ", z_min, z_max)" : ")"));
+      if (s.periodic[a]) scene_error("domain.mirror", "'" + f + "' lies on a periodic axis");
+      (side == "_min" ? s.mirror_min : s.mirror_max)[a] = true;
+    }
+  } else {
+    d.optional("mirror");
+  }
   d.finish();
 }
 

@@ -216,6 +216,13 @@ struct Scene {
   double skin_factor = 0.3;  // Verlet skin as a fraction of h
   Point domain_min, domain_max;
   std::vector<bool> periodic;
+  // domain.mirror: symmetry planes at the faces domain.min[a] / domain.max[a].
+  std::vector<bool> mirror_min, mirror_max;
+  bool has_mirror() const {
+    for (std::size_t a = 0; a < mirror_min.size(); ++a)
+      if (mirror_min[a] || mirror_max[a]) return true;
+    return false;
+  }
   std::vector<Material> materials;
   std::vector<BodySpec> bodies;
   std::vector<BoundarySpec> boundaries;

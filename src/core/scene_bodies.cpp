@@ -16,32 +16,45 @@ void check_expression(const std::string& text, const std::string& path, const Co
 }
 
 // Built-in initial velocity profiles, written out as expressions.
+// cantilever_mode: fundamental bending mode of a clamped-free beam (MMB Eq. 35-36),
+//   v = v_l f(x)/f(l), f(x) = (cos kl + cosh kl)(cosh kx - cos kx) + (sin kl - sinh kl)(sinh kx -
+//   sin kx), zero for x < clamp.
+// clamped_clamped_mode: first mode of a beam clamped at both ends (Blevins, Formulas for Natural
+//   Frequency and Mode Shape, 1979, Table 8-1: cos kl cosh kl = 1, kl = 4.7300, s = 0.982502),
+//   v = v_l f(x)/f(l/2),
+//   f(x) = (cosh kx - cos kx) - s (sinh kx - sin kx), s = (cosh kl - cos kl)/(sinh kl - sin kl),
+//   zero outside [clamp, clamp + length].
 std::vector<std::string> velocity_profile(MapReader& in, int dim) {
   MapReader pr(in.node("velocity_profile"), in.at("velocity_profile"));
-  pr.choice("type", {"cantilever_mode"});
-  // Fundamental bending mode of a clamped plate (MMB Eq. 35-36): v(x) = v_l f(x)/f(l),
-  // f(x) = (cos kl + cosh kl)(cosh kx - cos kx) + (sin kl - sinh kl)(sinh kx - sin kx).
+  const std::string type = pr.choice("type", {"cantilever_mode", "clamped_clamped_mode"});
+  const bool cc = type == "clamped_clamped_mode";
   const double vl = pr.number("amplitude");
   const double x0 = pr.number("clamp");
   const double len = pr.positive("length");
-  const double kl = pr.positive("kl", 1.875);
+  const double kl = pr.positive("kl", cc ? 4.730040745 : 1.875);
   const std::string axis = pr.choice("direction", {"x", "y", "z"}, "y");
   const std::string along = pr.choice("along", {"x", "y", "z"}, "x");
   pr.finish();
   const int a = axis[0] - 'x';
   if (a >= dim || along[0] - 'x' >= dim) scene_error(pr.path(), "axis not in this dimension");
   const double k = kl / len;
+  // f(x) = A (cosh kx - cos kx) + B (sinh kx - sin kx)
+  const double A = cc ? 1.0 : std::cos(kl) + std::cosh(kl);
+  const double B = cc ? -(std::cosh(kl) - std::cos(kl)) / (std::sinh(kl) - std::sin(kl))
+                      : std::sin(kl) - std::sinh(kl);
   auto f = [&](double x) {
-    return (std::cos(kl) + std::cosh(kl)) * (std::cosh(k * x) - std::cos(k * x)) +
-           (std::sin(kl) - std::sinh(kl)) * (std::sinh(k * x) - std::sin(k * x));
+    return A * (std::cosh(k * x) - std::cos(k * x)) + B * (std::sinh(k * x) - std::sin(k * x));
   };
+  const double fref = f(cc ? 0.5 * len : len);
   const std::string sx = fmt::format("({}-({:.17g}))", along, x0);
   const std::string ks = fmt::format("{:.17g}", k);
+  const std::string inside =
+      cc ? fmt::format("{0}>0 && {0}<{1:.17g}", sx, len) : fmt::format("{0}>0", sx);
   std::string e = fmt::format(
-      "{0}>0 ? "
+      "{5} ? "
       "{1:.17g}*(({2:.17g})*(cosh({3}*{0})-cos({3}*{0}))+({4:.17g})*(sinh({3}*{0})-sin({3}*{0}))) "
       ": 0",
-      sx, vl / f(len), std::cos(kl) + std::cosh(kl), ks, std::sin(kl) - std::sinh(kl));
+      sx, vl / fref, A, ks, B, inside);
   std::vector<std::string> out(dim, "0");
   out[a] = e;
   return out;
@@ -318,6 +331,10 @@ void check_continua(const Scene& s) {
     const std::string pi = "bodies[" + std::to_string(i) + "] (" + bi.name + ")";
     if (bi.phase == "solid" && !bi.total_lagrangian && s.materials[bi.material].neo_hookean)
       scene_error(pi + ".material", "elasticity: neo_hookean needs formulation: total_lagrangian");
+    if (s.has_mirror() && (bi.phase == "rigid" || bi.total_lagrangian))
+      scene_error(pi + (bi.total_lagrangian ? ".formulation" : ".phase"),
+                  std::string(bi.total_lagrangian ? "total_lagrangian" : "rigid") +
+                      " bodies do not support domain.mirror");
     if (!bi.total_lagrangian) continue;
     for (std::size_t a = 0; a < s.periodic.size(); ++a)
       if (s.periodic[a])

@@ -23,6 +23,13 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     dom.hi[a] = scene_.domain_max[a];
     dom.periodic[a] = scene_.periodic[a];
   }
+  if (scene_.has_mirror()) {
+    if (comm_.parallel())
+      throw InputError("domain.mirror: not supported on more than one MPI rank");
+    const double halo = kernel_.radius() + scene_.skin_factor * scene_.h();
+    mirror_ = std::make_unique<Mirror<D>>(dom, scene_.mirror_min, scene_.mirror_max, halo);
+    dom = mirror_->extended(dom);  // the images lie beyond the planes
+  }
   nb_.configure(dom, kernel_.radius(), scene_.skin_factor * scene_.h());
   if (comm_.parallel())
     dec_ = std::make_unique<Decomposition<D>>(comm_, dom, nb_.cutoff() + nb_.skin());
@@ -136,6 +143,7 @@ void Simulation<D>::create_particles() {
     }
   }
   if (dec_) dec_->adopt(p_);  // every rank holds its own slab: the first rebuild balances
+  if (mirror_) mirror_->adopt(p_);
   for (auto& m : modules_) m->on_create(*this);
 }
 
@@ -300,7 +308,11 @@ bool Simulation<D>::update_neighbours() {
   for (auto& m : modules_) m->before_rebuild(*this);
   const std::size_t own = owned();
   std::vector<float> work;  // MPI: cost of each owned particle, for the balance
-  if (dec_) {               // ghosts are made anew below
+  if (mirror_) {            // images are made anew below
+    mirror_->drop(p_);
+    if (remove_flag_.size() > own) remove_flag_.resize(own);
+  }
+  if (dec_) {  // ghosts are made anew below
     p_.resize(own);
     if (remove_flag_.size() > own) remove_flag_.resize(own);
     // Pair loops dominate a step: a particle costs about 1 + its pairs in the support.
@@ -338,6 +350,13 @@ bool Simulation<D>::update_neighbours() {
     if (reorder) nb_.sort_by_cell(p_);
     dec_->make_ghosts(p_);
     bad = nb_.build(p_, false, dec_->owned());
+  } else if (mirror_) {
+    bad = nb_.wrap(p_);
+    if (bad < 0) {
+      if (reorder) nb_.sort_by_cell(p_);
+      mirror_->make_ghosts(p_);
+      bad = nb_.build(p_, false, mirror_->owned());
+    }
   } else {
     bad = nb_.build(p_, reorder);
   }

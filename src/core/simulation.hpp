@@ -11,6 +11,7 @@
 #include "decomposition.hpp"
 #include "expression.hpp"
 #include "kernel.hpp"
+#include "mirror.hpp"
 #include "neighbours.hpp"
 #include "particles.hpp"
 #include "scene.hpp"
@@ -187,18 +188,23 @@ class Simulation {
   // over all; sums over
   // particles (forces on bodies, probes, energies) take the owned ones and reduce over comm().
   const Comm& comm() const { return comm_; }
-  std::size_t owned() const { return dec_ ? dec_->owned() : p_.size(); }
+  // Mirror images (domain.mirror, see Mirror) are ghosts too: they follow the owned particles.
+  std::size_t owned() const {
+    return dec_ ? dec_->owned() : mirror_ ? mirror_->owned() : p_.size();
+  }
   const Decomposition<D>* decomposition() const { return dec_.get(); }
   // Refreshes ghost copies of fields a pass has just written (a no-op on one rank). Pair loops
   // leave ghosts without valid sums (they have no list): a field read through neighbours later,
   // or used by a ghost's own per-particle update, must be exchanged by the pass that wrote it.
   void exchange(std::initializer_list<int> fields) {
     if (dec_) dec_->exchange(p_, std::span<const int>(fields.begin(), fields.size()));
+    if (mirror_) mirror_->exchange(p_, std::span<const int>(fields.begin(), fields.size()));
   }
   // The particles p holds now are this rank's own (its share of a checkpoint just read): the
   // first rebuild balances the ranks.
   void adopt_particles() {
     if (dec_) dec_->adopt(p_);
+    if (mirror_) mirror_->adopt(p_);
   }
 
  private:
@@ -221,6 +227,7 @@ class Simulation {
   Scene scene_;
   const Comm& comm_ = Comm::world();
   std::unique_ptr<Decomposition<D>> dec_;
+  std::unique_ptr<Mirror<D>> mirror_;  // domain.mirror (serial runs only)
   Particles<D> p_;
   Kernel<D> kernel_;
   Neighbours<D> nb_;

@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Collects the runs of the strip_3d studies (monosph study output folders, one per formulation
+and case) into strip_3d.csv / strip_3d.md (signed period error, observed orders, wall time,
+memory) and draws convergence.png (|error| against particles through the thickness) and
+tip.png (tip / mid-span deflection at 4 through the thickness).
+Usage: collect.py STUDY_ROOT (folders named <formulation>_<case>, e.g. tl25_cantilever)."""
+import csv, glob, json, math, os, sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+H = 0.02  # strip thickness
+LABEL = {"eulerian": "Eulerian, xi = 0.5, Newmark 0.6", "tl": "total Lagrangian, alpha = 5",
+         "tl25": "total Lagrangian, alpha = 25", "enog": "non-hourglass (Wendland)"}
+root = sys.argv[1]
+here = os.path.dirname(os.path.abspath(__file__))
+rows = []
+for study in sorted(glob.glob(os.path.join(root, "*_*"))):
+    if not os.path.isdir(study):
+        continue
+    form, case = os.path.basename(study).split("_", 1)
+    for run in sorted(glob.glob(os.path.join(study, "run*"))):
+        try:
+            j = json.load(open(os.path.join(run, "summary.json")))
+        except (OSError, ValueError):
+            continue
+        m = j.get("metrics", {}).get("period", {})
+        if j.get("status") != "completed" or "value" not in m:
+            continue
+        n = round(H / j["dp"])
+        e = (m["value"] - m["reference"]) / m["reference"]
+        rows.append(dict(formulation=form, case=case, n=n, dp=j["dp"], particles=j["particles"],
+                         steps=j["steps"], wall_seconds=round(j["wall_seconds"], 1),
+                         peak_memory_mb=round(j["peak_memory_bytes"] / 1e6, 1),
+                         period=round(m["value"], 6), reference=m["reference"],
+                         error=round(e, 5), run=run))
+rows.sort(key=lambda r: (r["case"], r["formulation"], r["n"]))
+keys = ["case", "formulation", "n", "dp", "particles", "steps", "wall_seconds", "peak_memory_mb",
+        "period", "reference", "error"]
+with open(os.path.join(here, "strip_3d.csv"), "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
+    w.writeheader()
+    w.writerows(rows)
+
+
+def order(rs):
+    """Least-squares slope of log|e| against log n (rs sorted by n); None with < 2 points."""
+    pts = [(math.log(r["n"]), math.log(abs(r["error"]))) for r in rs if r["error"] != 0]
+    if len(pts) < 2:
+        return None
+    mx = sum(p[0] for p in pts) / len(pts)
+    my = sum(p[1] for p in pts) / len(pts)
+    return -sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
+
+
+with open(os.path.join(here, "strip_3d.md"), "w") as f:
+    for case in ("cantilever", "cc"):
+        f.write(f"\n### {'cantilever (kl = 1.8751, l/h = 10)' if case == 'cantilever' else 'clamped-clamped (kl = 4.7300, L/h = 20)'}\n\n")
+        f.write("| formulation | n = 3 | n = 4 | n = 6 | n = 8 | order | wall [s] (n = 3/4/6/8) | peak memory [MB] |\n|---|---|---|---|---|---|---|---|\n")
+        for form in ("eulerian", "tl", "tl25", "enog"):
+            rs = [r for r in rows if r["case"] == case and r["formulation"] == form]
+            if not rs:
+                continue
+            by = {r["n"]: r for r in rs}
+            cell = lambda n: f"{100 * by[n]['error']:+.1f} %" if n in by else "not run"
+            o = order(rs)
+            f.write(f"| {LABEL[form]} | {cell(3)} | {cell(4)} | {cell(6)} | {cell(8)} | "
+                    f"{'%.2f' % o if o else ''} | {' / '.join(str(by[n]['wall_seconds']) for n in sorted(by))} | "
+                    f"{' / '.join(str(by[n]['peak_memory_mb']) for n in sorted(by))} |\n")
+
+fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+for ax, case in zip(axes, ("cantilever", "cc")):
+    for form in ("eulerian", "tl", "tl25", "enog"):
+        rs = [r for r in rows if r["case"] == case and r["formulation"] == form]
+        if rs:
+            ax.loglog([r["n"] for r in rs], [abs(r["error"]) for r in rs], "o-", label=LABEL[form])
+    ax.axhline(0.05, color="grey", ls="--", lw=0.8)
+    ax.set_xticks([3, 4, 6, 8])
+    ax.set_xticklabels(["3", "4", "6", "8"])
+    ax.set_xlabel("particles through the thickness")
+    ax.set_ylabel("|period error| vs Euler-Bernoulli")
+    ax.set_title("cantilever strip" if case == "cantilever" else "strip clamped at both ends")
+    ax.grid(True, which="both", lw=0.3)
+axes[0].legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(os.path.join(here, "convergence.png"), dpi=110)
+
+fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+for ax, case in zip(axes, ("cantilever", "cc")):
+    for form in ("eulerian", "tl", "tl25", "enog"):
+        rs = [r for r in rows if r["case"] == case and r["formulation"] == form and r["n"] == 4]
+        if not rs:
+            continue
+        t, y = [], []
+        with open(os.path.join(rs[0]["run"], "probes.csv")) as f:
+            rd = csv.DictReader(f)
+            col = [c for c in rd.fieldnames if c.endswith("_y")][0]
+            for row in rd:
+                t.append(float(row["time"]))
+                y.append(float(row[col]) - 0.0025)  # the tracked particle starts at y = dp/2
+        ax.plot(t, y, label=LABEL[form])
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("deflection [m]")
+    ax.set_title(("tip" if case == "cantilever" else "mid-span") + ", 4 through the thickness")
+    ax.grid(True, lw=0.3)
+axes[0].legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(os.path.join(here, "tip.png"), dpi=110)
+print(open(os.path.join(here, "strip_3d.md")).read())
