@@ -2,9 +2,6 @@
 // lowers its thread count while other processes keep the CPUs busy.
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -12,10 +9,12 @@
 #include <thread>
 #include <vector>
 
+#include "../busy_children.hpp"
 #include "core/thread_governor.hpp"
 #include "core/threads.hpp"
 
 using namespace monosph;
+using monosph::test::BusyChildren;
 
 TEST(Threads, JobsTimesThreadsNeverExceedTheCpus) {
   const int cpus = usable_cpus();
@@ -92,25 +91,6 @@ TEST(ThreadGovernor, FollowsTheLoadOfOtherProcesses) {
 }
 
 namespace {
-
-// `n` child processes that spin until they are killed.
-struct BusyChildren {
-  std::vector<pid_t> pids;
-  explicit BusyChildren(int n) {
-    for (int i = 0; i < n; ++i) {
-      const pid_t pid = fork();
-      if (pid == 0) {
-        volatile unsigned long x = 0;
-        for (;;) x = x + 1;
-      }
-      if (pid > 0) pids.push_back(pid);
-    }
-  }
-  ~BusyChildren() {
-    for (pid_t p : pids) kill(p, SIGKILL);
-    for (pid_t p : pids) waitpid(p, nullptr, 0);
-  }
-};
 
 // Samples of other_runnable_threads() over about 0.2 s, sorted.
 std::vector<int> samples() {

@@ -5,33 +5,13 @@
 // this one may keep a CPU busy.
 #include <gtest/gtest.h>
 
+#include "../busy_children.hpp"
 #include "child_process.hpp"
 #include "core/threads.hpp"
 #include "run_helpers.hpp"
 
 namespace monosph::test {
 namespace {
-
-// `n` child processes that spin until they are stopped.
-struct BusyChildren {
-  std::vector<pid_t> pids;
-  explicit BusyChildren(int n) {
-    for (int i = 0; i < n; ++i) {
-      const pid_t pid = fork();
-      if (pid == 0) {
-        volatile unsigned long x = 0;
-        for (;;) x = x + 1;
-      }
-      if (pid > 0) pids.push_back(pid);
-    }
-  }
-  void stop() {
-    for (pid_t p : pids) kill(p, SIGKILL);
-    for (pid_t p : pids) waitpid(p, nullptr, 0);
-    pids.clear();
-  }
-  ~BusyChildren() { stop(); }
-};
 
 TEST(SharedMachine, TwoThreadsDropToOneWhileOtherProcessesHoldTheCpus) {
   const int cpus = usable_cpus();
