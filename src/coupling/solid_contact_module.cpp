@@ -83,7 +83,7 @@ void SolidContactModule<D>::forces(Simulation<D>& sim) {
       if (r >= dc || !(r > 0)) continue;  // repulsive only: no force at or beyond d_c
       const Vec<D> nrm = pl.r[k] / r;     // from j to i
       const double ms = m[i] * m[j] / (m[i] + m[j]);
-      double fn = hertz_force(es, rstar, dc - r) / depth_;  // Johnson 1985, Eq. 4.23
+      double fn = pair_force(r, static_cast<int>(mt[i]), static_cast<int>(mt[j]));
       if (zeta > 0) {
         // Normal dashpot -2 zeta sqrt(k m*) v_n, k = dF/d(delta) = 1.5 F/delta (Tsuji et al. 1992),
         // never pulling (the pair force stays repulsive).
