@@ -24,7 +24,8 @@ std::string read_proc(const char* path) {
   return n > 0 ? std::string(buf, static_cast<size_t>(n)) : std::string();
 }
 
-// Runnable threads of this process: state R in /proc/self/task/<tid>/stat ("tid (comm) R ...").
+}  // namespace
+
 int own_runnable_threads() {
   DIR* dir = ::opendir("/proc/self/task");
   if (!dir) return -1;
@@ -39,8 +40,6 @@ int own_runnable_threads() {
   ::closedir(dir);
   return running;
 }
-
-}  // namespace
 
 int other_runnable_threads() {
   // /proc/loadavg: "0.52 0.58 0.59 3/467 12345": the fourth field is runnable/total. Own threads

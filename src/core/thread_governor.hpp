@@ -9,6 +9,8 @@ namespace monosph {
 // Runnable threads of other processes: the kernel's runnable count (/proc/loadavg) less this
 // process's runnable threads (/proc/self/task/*/stat); -1 when /proc cannot be read.
 int other_runnable_threads();
+// Runnable threads of this process: state R in /proc/self/task/<tid>/stat; -1 when unreadable.
+int own_runnable_threads();
 
 // Lowers the thread count of the parallel regions to the CPUs that other processes leave free and
 // raises it back (up to `most`) when they go. OpenMP threads wait for each other at every barrier
