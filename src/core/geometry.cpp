@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scene.hpp"
+#include "shell_fill.hpp"
 
 namespace monosph {
 
@@ -148,6 +149,10 @@ double count_particles(const Scene& s, bool* exact) {
   for (std::size_t i = 0; i < order.size(); ++i) {
     const BodySpec& b = *order[i];
     double count = 0;
+    if (b.fill_shells) {  // body-fitted points, not lattice nodes: counted exactly
+      total += shell_point_count(b.shape, s.dimension, s.dp);
+      continue;
+    }
     const long stride = walk_lattice(s, b.shape, 1e6, [&](const Point& x) {
       if (b.fill_rest)
         for (std::size_t o = 0; o < i; ++o)

@@ -111,6 +111,7 @@ struct BodySpec {
   Point body_force;               // replaces the scene's body_force when given
   double damping = 0;             // mass-proportional damping rate c [1/s]: a -= c v
   bool fill_rest = false;         // takes only the lattice nodes no other body takes
+  bool fill_shells = false;       // body-fitted concentric shells (sphere, ring; shell_fill.hpp)
   bool cluster_per_part = false;  // rigid: one cluster per part of a union shape (else one)
   Point angular_velocity;         // rigid: initial (2D: one value; 3D: a vector)
 };

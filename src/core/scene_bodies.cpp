@@ -261,7 +261,12 @@ void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim
     body.body_force = b.vector("body_force", dim);
   else
     b.optional("body_force");
-  body.fill_rest = b.choice("fill", {"all", "rest"}, "all") == "rest";
+  const std::string fill = b.choice("fill", {"all", "rest", "shells"}, "all");
+  body.fill_rest = fill == "rest";
+  body.fill_shells = fill == "shells";
+  if (body.fill_shells && body.shape.kind != Shape::Kind::Sphere &&
+      body.shape.kind != Shape::Kind::Ring)
+    scene_error(p + ".fill", "shells needs a sphere (circle in 2D) or ring shape");
   if (b.has("clusters")) {
     if (body.phase != "rigid") scene_error(p + ".clusters", "applies to rigid bodies only");
     body.cluster_per_part = b.choice("clusters", {"one", "per_part"}) == "per_part";

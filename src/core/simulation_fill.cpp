@@ -8,6 +8,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "shell_fill.hpp"
 #include "simulation.hpp"
 
 namespace monosph {
@@ -68,7 +69,8 @@ template <int D>
 void Simulation<D>::fill_bodies() {
   const double dp = scene_.dp;
   // Global lattice: nodes at domain.min + (k + 1/2) dp. Later bodies may not overlap earlier ones.
-  // Bodies with `fill: rest` come last and take only the nodes no other body took.
+  // Bodies with `fill: rest` come last and take only the nodes no other body took; bodies with
+  // `fill: shells` take body-fitted points (shell_fill.hpp) instead of lattice nodes.
   // MPI: every rank walks every node (so ids and jitter are the serial run's) but keeps only the
   // nodes of its slab along the longest axis, so no rank ever holds the whole scene.
   std::array<long, D> nk;
@@ -84,7 +86,8 @@ void Simulation<D>::fill_bodies() {
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t b = 0; b < scene_.bodies.size(); ++b)
       if (scene_.bodies[b].fill_rest == (pass == 1)) order.push_back(b);
-  std::vector<std::size_t> done;  // bodies filled so far
+  std::vector<std::size_t> done;          // bodies filled so far
+  std::vector<std::size_t> shell_bodies;  // of them, those with `fill: shells`
   std::int64_t next_id = 0;
   for (std::size_t b : order) {
     const BodySpec& body = scene_.bodies[b];
@@ -105,9 +108,31 @@ void Simulation<D>::fill_bodies() {
     };
     std::vector<Point> pts;
     std::vector<std::int64_t> ids;
+    std::vector<double> vols;  // `fill: shells`: each point's volume (else dp^D)
     std::int64_t accepted = 0;
+    auto overlap = [&](const Point& x, std::size_t other) {
+      std::ostringstream os;
+      os << "bodies[" << b << "] (" << body.name << ").shape: overlaps body '"
+         << scene_.bodies[other].name << "' at (";
+      for (int a = 0; a < D; ++a) os << (a ? ", " : "") << x[a];
+      os << ")";
+      throw InputError(os.str());
+    };
+    if (body.fill_shells) {
+      for (const ShellPoint& q : shell_points(body.shape, D, dp)) {
+        for (std::size_t o : done)
+          if (scene_.bodies[o].shape.contains(q.x)) overlap(q.x, o);
+        const long ks =
+            static_cast<long>(std::floor((q.x[slab_axis] - scene_.domain_min[slab_axis]) / dp));
+        if (std::clamp(ks, 0L, nk[slab_axis] - 1) >= slab0 &&
+            std::clamp(ks, 0L, nk[slab_axis] - 1) < slab1)
+          pts.push_back(q.x), ids.push_back(accepted), vols.push_back(q.volume);
+        ++accepted;
+      }
+      shell_bodies.push_back(b);
+    }
     std::array<long, D> k = k0;
-    while (true) {
+    while (!body.fill_shells) {
       Point x(D);
       std::int64_t key = 0, mul = 1;
       for (int a = 0; a < D; ++a) {
@@ -123,16 +148,11 @@ void Simulation<D>::fill_bodies() {
             ++accepted;
           }
         } else {
+          for (std::size_t o : shell_bodies)
+            if (scene_.bodies[o].shape.contains(x)) overlap(x, o);
           if (mine) {
             auto [it, fresh] = node_owner.emplace(key, static_cast<int>(b));
-            if (!fresh) {
-              std::ostringstream os;
-              os << "bodies[" << b << "] (" << body.name << ").shape: overlaps body '"
-                 << scene_.bodies[it->second].name << "' at (";
-              for (int a = 0; a < D; ++a) os << (a ? ", " : "") << x[a];
-              os << ")";
-              throw InputError(os.str());
-            }
+            if (!fresh) overlap(x, static_cast<std::size_t>(it->second));
             pts.push_back(x), ids.push_back(accepted);
           }
           ++accepted;
@@ -190,7 +210,7 @@ void Simulation<D>::fill_bodies() {
       if (!(rho[i] > 0) || !std::isfinite(rho[i]))  // inf passes > 0
         throw InputError(at + "density: not a positive finite value at a particle (" +
                          std::to_string(rho[i]) + ")");
-      m[i] = rho[i] * vol;
+      m[i] = rho[i] * (vols.empty() ? vol : vols[q]);
       for (int a = 0; a < D; ++a) {
         v[i][a] = body.velocity_expr.empty() ? 0.0 : vel_ex[a](xx, yy, zz, 0.0);
         if (!std::isfinite(v[i][a]))

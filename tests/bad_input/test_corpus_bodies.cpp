@@ -137,6 +137,8 @@ const SceneCase kBodies[] = {
      "bodies[2] (plate).body_force: expected a list of 2 numbers, got a list of 3"},
     {"fill_typo", kGrains, "fill: rest", "fill: others",
      "bodies[2] (oil).fill: 'others' is not allowed"},
+    {"fill_shells_on_a_box", kGrains, "fill: rest", "fill: shells",
+     "bodies[2] (oil).fill: shells needs a sphere (circle in 2D) or ring shape"},
     {"clusters_on_solid", kFluid, kPlate, "    hourglass: {xi: 1}\n    clusters: one",
      "bodies[2] (plate).clusters: applies to rigid bodies only"},
     {"erosion_on_fluid", kFluid, kWater, "    erosion: failed",

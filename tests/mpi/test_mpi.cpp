@@ -100,6 +100,13 @@ TEST(Mpi, SolidContactOfTwoSpheresMatchesSerial) {
   serial_vs_ranks(c, {2});
 }
 
+TEST(Mpi, SpheresFilledByShellsMatchSerial) {
+  // `fill: shells` (points not on the lattice): every rank keeps the shell points of its slab.
+  Case c{"shells", "tests/scenes/sphere_collision_shells.yaml",
+         "bodies.0.formulation=eulerian bodies.1.formulation=eulerian", 3};
+  serial_vs_ranks(c, {2});
+}
+
 TEST(Mpi, GrainSettlingMatchesSerial) {
   serial_vs_ranks({"settle", "tests/scenes/grain_in_tank.yaml", ""}, {2});
 }
