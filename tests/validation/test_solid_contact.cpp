@@ -215,8 +215,9 @@ TEST(SolidContact, WarnsOnceWhenSolidBodiesWouldPassThroughEachOther) {
 }
 
 TEST(SolidContact, RubberRingsAsTwoContinuaReboundAndSeparate) {
-  // cases/rubber_rings/scene_contact.yaml (full run, ~45 s on one thread): measured restitution
-  // 0.798 (shared continuum 0.790), smallest ring-ring distance 0.339 dp.
+  // cases/rubber_rings/scene_contact.yaml (rings filled by shells; full run, ~11 s on one idle
+  // thread): measured restitution 0.809 (shared continuum 0.790), smallest distance 0.496 dp (0.339
+  // with the lattice fill).
   const std::string out = out_dir("rings_contact");
   auto r = run_monosph("run " + source("cases/rubber_rings/scene_contact.yaml") + " --out " + out +
                        " --quiet --threads 1 --set output.every=1");
@@ -225,7 +226,7 @@ TEST(SolidContact, RubberRingsAsTwoContinuaReboundAndSeparate) {
   const double e = (t["right_vx"].back() - t["left_vx"].back()) / (2 * 7.071);
   EXPECT_GT(e, 0.75);
   EXPECT_LT(e, 0.85);
-  EXPECT_GT(min_of(t["min_distance"]), 0.25);
+  EXPECT_GT(min_of(t["min_distance"]), 0.4);
   EXPECT_LT(max_of(t["disorder"]), 0.05);
   EXPECT_EQ(t["ring_neighbours"].back(), 0.0);  // apart at the end: nothing stuck
 }
