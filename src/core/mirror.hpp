@@ -11,8 +11,8 @@
 // neighbours; they kick and drift with their sources' mirrored accelerations.
 //
 // The image of a body symmetric about the plane is the body's other half, so the half model gives
-// the full model's result (tests/unit/test_mirror.cpp). Serial only (one MPI rank);
-// total-Lagrangian bodies are not supported (their reference pairs are found once, by particle id).
+// the full model's result (tests/unit/test_mirror.cpp). Serial only (one MPI rank). Total-
+// Lagrangian bodies hold their own images in their reference pairs (solid/total_lagrangian.hpp).
 #include <span>
 #include <string>
 #include <vector>

@@ -336,10 +336,12 @@ void check_continua(const Scene& s) {
     const std::string pi = "bodies[" + std::to_string(i) + "] (" + bi.name + ")";
     if (bi.phase == "solid" && !bi.total_lagrangian && s.materials[bi.material].neo_hookean)
       scene_error(pi + ".material", "elasticity: neo_hookean needs formulation: total_lagrangian");
-    if (s.has_mirror() && (bi.phase == "rigid" || bi.total_lagrangian))
-      scene_error(pi + (bi.total_lagrangian ? ".formulation" : ".phase"),
-                  std::string(bi.total_lagrangian ? "total_lagrangian" : "rigid") +
-                      " bodies do not support domain.mirror");
+    if (s.has_mirror() && bi.phase == "rigid")
+      scene_error(pi + ".phase", "rigid bodies do not support domain.mirror");
+    if (bi.total_lagrangian)
+      for (std::size_t a = 0; a < s.mirror_min.size(); ++a)
+        if (s.mirror_min[a] && s.mirror_max[a])
+          scene_error("domain.mirror", "total_lagrangian bodies take one plane per axis");
     if (!bi.total_lagrangian) continue;
     for (std::size_t a = 0; a < s.periodic.size(); ++a)
       if (s.periodic[a])

@@ -16,6 +16,11 @@ TotalLagrangian<D>::TotalLagrangian(Simulation<D>& sim, int kS, int kF, int kgra
   for (const auto& b : sim.bodies()) tlb_.push_back(b.total_lagrangian ? 1 : 0);
   // Not decomposed over ranks: the reference pairs would cross rank boundaries.
   if (sim.comm().size() > 1) throw InputError("formulation: total_lagrangian runs on one rank");
+  const Scene& sc = sim.scene();
+  for (int a = 0; a < D; ++a) {
+    const bool lo = sc.has_mirror() && sc.mirror_min[a], hi = sc.has_mirror() && sc.mirror_max[a];
+    plane_[a] = lo ? sc.domain_min[a] : hi ? sc.domain_max[a] : std::nan("");  // one (scene check)
+  }
   // Reference volume V0_j of G15 Eq. 14-24 (checkpointed: restarts rebuild the reference pairs).
   kV0_ = sim.particles().add_field("reference_volume", 1);
 }
@@ -45,7 +50,7 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
   auto V0 = p.template view<double>(kV0_);
   const auto& W = sim.kernel();
   const double rc = W.radius();
-  const std::size_t n = p.size();
+  const std::size_t n = sim.owned();  // not the Mirror's images
   // Slots: the total-Lagrangian particles in id order (independent of the particle order).
   std::vector<std::size_t> ix;
   for (std::size_t i = 0; i < n; ++i)
@@ -60,41 +65,59 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
   std::vector<std::int64_t> body(ns);
   for (std::size_t s = 0; s < ns; ++s)
     sid_[s] = id[ix[s]], v0_[s] = V0[ix[s]], X[s] = X0[ix[s]], body[s] = bd[ix[s]];
-  // Cells of size rc over the reference positions.
+  // Candidate neighbours: the slots (mask 0) and, for every set of symmetry planes a slot lies
+  // within rc of, its image across them (mask: the planes' axes).
+  std::vector<int> cslot;
+  std::vector<unsigned char> cmask;
+  std::vector<Vec<D>> cX;
+  for (std::size_t s = 0; s < ns; ++s)
+    for (unsigned m = 0; m < (1u << D); ++m) {
+      bool near = true;
+      for (int a = 0; a < D; ++a)
+        if (m >> a & 1u) near = near && std::abs(X[s][a] - plane_[a]) < rc;  // NaN: false
+      if (near) cslot.push_back(int(s)), cmask.push_back(m), cX.push_back(image(X[s], m, true));
+    }
+  const std::size_t nc_all = cslot.size();
+  // Cells of size rc over the candidates' reference positions.
   Vec<D> lo = Vec<D>::Constant(std::numeric_limits<double>::infinity());
-  for (const auto& x : X) lo = lo.cwiseMin(x);
+  for (const auto& x : cX) lo = lo.cwiseMin(x);
   std::array<std::int64_t, 3> nc{1, 1, 1};
-  std::vector<std::array<std::int64_t, 3>> cell(ns);
-  for (std::size_t s = 0; s < ns; ++s) {
-    cell[s] = {0, 0, 0};
+  std::vector<std::array<std::int64_t, 3>> cell(nc_all);
+  for (std::size_t c = 0; c < nc_all; ++c) {
+    cell[c] = {0, 0, 0};
     for (int a = 0; a < D; ++a) {
-      cell[s][a] = static_cast<std::int64_t>(std::floor((X[s][a] - lo[a]) / rc));
-      nc[a] = std::max(nc[a], cell[s][a] + 1);
+      cell[c][a] = static_cast<std::int64_t>(std::floor((cX[c][a] - lo[a]) / rc));
+      nc[a] = std::max(nc[a], cell[c][a] + 1);
     }
   }
   auto key = [&](std::int64_t cx, std::int64_t cy, std::int64_t cz) {
     return (cz * nc[1] + cy) * nc[0] + cx;
   };
   std::unordered_map<std::int64_t, std::vector<int>> grid;
-  for (std::size_t s = 0; s < ns; ++s)
-    grid[key(cell[s][0], cell[s][1], cell[s][2])].push_back(static_cast<int>(s));
+  std::vector<int> first(ns);  // the candidate of each slot itself
+  for (std::size_t c = 0; c < nc_all; ++c) {
+    grid[key(cell[c][0], cell[c][1], cell[c][2])].push_back(static_cast<int>(c));
+    if (cmask[c] == 0) first[cslot[c]] = static_cast<int>(c);
+  }
   // Reference neighbours: same body, |X_ij| < rc, in slot (= id) order: the sums below run in
   // the same order whatever the particle order, so a restart reproduces them bit for bit.
+  // Lists of candidates, sorted by (slot, mask) = candidate order.
   std::vector<std::vector<int>> nbr(ns);
   const int dz = D == 3 ? 1 : 0;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t s = 0; s < ns; ++s) {
     auto& list = nbr[s];
+    const auto& cs = cell[first[s]];
     for (int cz = -dz; cz <= dz; ++cz)
       for (int cy = -1; cy <= 1; ++cy)
         for (int cx = -1; cx <= 1; ++cx) {
-          const std::int64_t x = cell[s][0] + cx, y = cell[s][1] + cy, z = cell[s][2] + cz;
+          const std::int64_t x = cs[0] + cx, y = cs[1] + cy, z = cs[2] + cz;
           if (x < 0 || y < 0 || z < 0 || x >= nc[0] || y >= nc[1] || z >= nc[2]) continue;
           auto it = grid.find(key(x, y, z));
           if (it == grid.end()) continue;
-          for (int t : it->second)
-            if (t != static_cast<int>(s) && body[t] == body[s] && (X[t] - X[s]).norm() < rc)
-              list.push_back(t);
+          for (int c : it->second)
+            if (c != first[s] && body[cslot[c]] == body[s] && (cX[c] - X[s]).norm() < rc)
+              list.push_back(c);
         }
     std::sort(list.begin(), list.end());
   }
@@ -103,6 +126,7 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
   const std::size_t np = start_[ns];
   nj_.resize(np);
   rev_.resize(np);
+  mask_.resize(np);
   X_.resize(np);
   g_.resize(np);
   w_.resize(np);
@@ -111,10 +135,11 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
     Mat<D> b = Mat<D>::Zero();
     for (std::size_t q = 0; q < nbr[s].size(); ++q) {
       const std::size_t k = start_[s] + q;
-      const int t = nbr[s][q];
-      const Vec<D> r = X[s] - X[t];  // X_i - X_j: grad_i W(X_ij) = f(|r|) r
+      const int c = nbr[s][q], t = cslot[c];
+      const Vec<D> r = X[s] - cX[c];  // X_i - X_j: grad_i W(X_ij) = f(|r|) r
       const double rr = r.norm(), f = W.f(rr);
       nj_[k] = t;
+      mask_[k] = cmask[c];
       X_[k] = -r;  // X_ij = X_j - X_i (G15 Fig. 1)
       w_[k] = W.w(rr);
       g_[k] = v0_[t] * f * r;
@@ -124,14 +149,23 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
     const Mat<D> L = invert_correction<D>(b);
     for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) g_[k] = L * g_[k];
   }
-  // Reverse pair (j, i) of every pair (i, j): the reference support is symmetric.
+  // Reverse pair (j, i) of every pair (i, j): the reference support is symmetric. For an image
+  // j' = R j, the reverse is (j, R i) in j's list: g_j'i = R g_j(Ri), P_j' = R P_j R.
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s)
     for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
       const int t = nj_[k];
-      auto b = nj_.begin() + static_cast<std::ptrdiff_t>(start_[t]);
-      auto e = nj_.begin() + static_cast<std::ptrdiff_t>(start_[t + 1]);
-      rev_[k] = static_cast<int>(std::lower_bound(b, e, static_cast<int>(s)) - nj_.begin());
+      // t's list is sorted by (slot, mask): the candidate order.
+      const auto want = std::make_pair(static_cast<int>(s), mask_[k]);
+      std::size_t lo = start_[t], hi = start_[t + 1];
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (std::make_pair(nj_[mid], mask_[mid]) < want)
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      rev_[k] = static_cast<int>(lo);
     }
   built_ = true;
 }
@@ -146,7 +180,7 @@ void TotalLagrangian<D>::map_slots(Simulation<D>& sim) {
   for (auto s : sid_) maxid = std::max(maxid, s);
   auto& pos = pos_;  // id -> index (kept: no allocation per rebuild)
   pos.assign(static_cast<std::size_t>(maxid) + 1, -1);
-  for (std::size_t i = 0; i < n; ++i) pos[id[i]] = static_cast<int>(i);
+  for (std::size_t i = 0; i < sim.owned(); ++i) pos[id[i]] = static_cast<int>(i);  // no images
   idx_.resize(sid_.size());
   slot_of_.assign(n, -1);
   for (std::size_t s = 0; s < sid_.size(); ++s) {
@@ -175,10 +209,10 @@ void TotalLagrangian<D>::rates(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    const Mat<D> F = reference_gradient(s, x);   // G15 Eq. 17
-    const Mat<D> Fd = reference_gradient(s, v);  // its rate
-    L[i] = Fd * F.inverse();                     // velocity gradient dv/dx = Fdot F^-1
-    drho[i] = 0;              // rho = rho0 / det F: no continuity equation
+    const Mat<D> F = reference_gradient(s, x, true);    // G15 Eq. 17
+    const Mat<D> Fd = reference_gradient(s, v, false);  // its rate
+    L[i] = Fd * F.inverse();                            // velocity gradient dv/dx = Fdot F^-1
+    drho[i] = 0;  // rho = rho0 / det F: no continuity equation
   }
 }
 
@@ -194,7 +228,7 @@ void TotalLagrangian<D>::sums(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static) reduction(max : bad)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    const Mat<D> F = reference_gradient(s, x);  // G15 Eq. 17
+    const Mat<D> F = reference_gradient(s, x, true);  // G15 Eq. 17
     F_[s] = F;
     Ff[i] = F;
     const double J = F.determinant();
@@ -279,18 +313,21 @@ void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
     double kappa = 0, stored = 0;
     for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
       const int t = nj_[k];
+      const unsigned mk = mask_[k];
       // G15 Eq. 24: f_i = sum_j V_i V_j (P_i L_i grad W_i(X_ij) - P_j L_j grad W_j(X_ji));
-      // g_ij holds V_j L_i grad W: anti-symmetric pair terms, linear momentum exact.
-      f.noalias() += Pi * g_[k] - v0_[t] * (P_[t] * g_[rev_[k]]);
+      // g_ij holds V_j L_i grad W: anti-symmetric pair terms, linear momentum exact. An image
+      // j' = R j: P_j' g_j'i = R (P_j g_j(Ri)).
+      const Vec<D> fj = v0_[t] * (P_[t] * g_[rev_[k]]);
+      f.noalias() += Pi * g_[k] - (mk ? image(fj, mk, false) : fj);
       if (alpha <= 0) continue;
       // G15 Eq. 25-27: error of the pair against F_i X_ij and F_j X_ij (X_ji = -X_ij).
       const int j = idx_[t];
-      const Vec<D> xij = x[j] - x[i];
+      const Vec<D> xij = (mk ? image(x[j], mk, true) : x[j]) - x[i];
       const double r = xij.norm();
       const Vec<D>& X = X_[k];
       const double X2 = X.squaredNorm();
       const double di = (F_[s] * X - xij).dot(xij) / r;
-      const double dj = (F_[t] * X - xij).dot(xij) / r;
+      const double dj = ((mk ? image(F_[t], mk) : F_[t]) * X - xij).dot(xij) / r;
       const double Ej = sw && ep[j] > 0 ? sy[j] : E;
       const double vw = v0_[t] * w_[k] / X2;  // V_j W(X_ij) / X_ij^2, W in the reference frame
       // G15 Eq. 32: -1/2 alpha V_i V_j W_ij / X_ij^2 [E_i delta_i + E_j delta_j] x_ij / x_ij

@@ -12,6 +12,10 @@
 // data is per slot and survives the cell-order re-sorting of particles; only the slot -> index
 // map is renewed at every neighbour rebuild. Restarts rebuild the reference data from the
 // checkpointed fields initial_position and reference_volume (deterministic: bit-identical).
+// Symmetry planes (domain.mirror): a particle's reference neighbours include the images of the
+// particles near a plane; an image's position, velocity, F and P follow from its source's by the
+// reflection, so no image particle is needed (the Mirror's images serve the other modules).
+#include <array>
 #include <span>
 #include <vector>
 
@@ -42,13 +46,30 @@ class TotalLagrangian {
  private:
   void build(Simulation<D>& sim);  // the reference pairs, once
   void map_slots(Simulation<D>& sim);
-  // sum_j (f_j - f_i) (x) g_ij over the reference pairs of slot s (G15 Eq. 17 for f = x).
-  Mat<D> reference_gradient(std::size_t s, std::span<const Vec<D>> f) const {
+  // sum_j (f_j - f_i) (x) g_ij over the reference pairs of slot s (G15 Eq. 17 for f = x); f a
+  // point field (positions: images reflected across the planes) or a vector field (velocities).
+  Mat<D> reference_gradient(std::size_t s, std::span<const Vec<D>> f, bool point) const {
     const int i = idx_[s];
     Mat<D> G = Mat<D>::Zero();
-    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k)
-      G.noalias() += (f[idx_[nj_[k]]] - f[i]) * g_[k].transpose();
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
+      const Vec<D>& fj = f[idx_[nj_[k]]];
+      G.noalias() += ((mask_[k] ? image(fj, mask_[k], point) : fj) - f[i]) * g_[k].transpose();
+    }
     return G;
+  }
+  // Mirror image across the planes of the axes in `m` (bit a: axis a): a point is reflected
+  // (x_a -> 2 c_a - x_a), a vector has those components negated.
+  Vec<D> image(Vec<D> f, unsigned m, bool point) const {
+    for (int a = 0; a < D; ++a)
+      if (m >> a & 1u) f[a] = (point ? 2 * plane_[a] : 0.0) - f[a];
+    return f;
+  }
+  // R M R for the reflection R of the axes in m: entry (a, b) times s_a s_b.
+  Mat<D> image(Mat<D> M, unsigned m) const {
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b)
+        if ((m >> a & 1u) != (m >> b & 1u)) M(a, b) = -M(a, b);
+    return M;
   }
 
   std::vector<char> tlb_;  // per body
@@ -60,8 +81,13 @@ class TotalLagrangian {
   std::vector<Mat<D>> F_, P_;
   // Reference pairs of slot s: k in [start_[s], start_[s+1]): neighbour slot, X_ij = X_j - X_i,
   // W(|X_ij|), g_ij, and the index of the pair (j, i) in j's list.
+  // mask_: 0 for a neighbour itself, else the axes across whose symmetry planes (domain.mirror)
+  // the neighbour is the image of slot nj_ (Libersky et al. 1993 ghosts, built in the reference
+  // configuration: the full body's reference neighbours and corrections).
   std::vector<std::size_t> start_;
   std::vector<int> nj_, rev_;
+  std::vector<unsigned char> mask_;
+  std::array<double, D> plane_;  // symmetry plane per axis (NaN: none)
   std::vector<Vec<D>> X_, g_;
   std::vector<double> w_;
   std::vector<int> slot_of_;  // per particle index: slot or -1
