@@ -122,10 +122,10 @@ void Simulation<D>::fill_bodies() {
       for (const ShellPoint& q : shell_points(body.shape, D, dp)) {
         for (std::size_t o : done)
           if (scene_.bodies[o].shape.contains(q.x)) overlap(q.x, o);
-        const long ks =
-            static_cast<long>(std::floor((q.x[slab_axis] - scene_.domain_min[slab_axis]) / dp));
-        if (std::clamp(ks, 0L, nk[slab_axis] - 1) >= slab0 &&
-            std::clamp(ks, 0L, nk[slab_axis] - 1) < slab1)
+        const long ks = std::clamp(
+            static_cast<long>(std::floor((q.x[slab_axis] - scene_.domain_min[slab_axis]) / dp)), 0L,
+            nk[slab_axis] - 1);
+        if (ks >= slab0 && ks < slab1)
           pts.push_back(q.x), ids.push_back(accepted), vols.push_back(q.volume);
         ++accepted;
       }

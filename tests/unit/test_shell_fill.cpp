@@ -153,6 +153,16 @@ bodies:
       EXPECT_NE(std::string(e.what()).find("overlaps body"), std::string::npos) << e.what();
     }
   }
+  try {  // a shells body is never clipped by the domain
+    const std::string big = ball.substr(0, ball.find("shape:")) +
+                            "shape: {circle: {center: [0, 0], radius: 0.012}}\n    fill: shells\n";
+    load_scene_text(head + big);
+    FAIL() << "shells beyond the domain accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies[0] (ball).shape: extends outside the domain"),
+              std::string::npos)
+        << e.what();
+  }
   try {
     const std::string box_ball = ball.substr(0, ball.find("shape:")) +
                                  "shape: {box: {min: [0, 0], max: [0.005, 0.005]}}\n" +
