@@ -22,7 +22,7 @@ BIN = os.environ.get("MONOSPH", os.path.join(ROOT, "build", "release", "monosph"
 
 H, W, G, RHO0 = 0.6, 1.2, 9.81, 1000.0
 TS = math.sqrt(G / H)          # t* = t sqrt(g / H)
-TANK_TOP = 4 * H               # open tank 4H tall
+TANK_TOP = 4.0                 # open tank 4 m tall (as TrixiParticles.jl's setup): the jet runs up past 4H
 SENSOR_Y, SENSOR_SIZE = 0.006, 0.0084   # De Courcy et al. 2024 P1: y from 1.8 to 10.2 mm
 FRONT_WINDOW = 2.3             # compare the front for t* <= 2.3 (before the far wall)
 # Windows of t* over which the mean P1 is compared (first peak, decay, plateau, second rise).
