@@ -26,7 +26,7 @@ TANK_TOP = 4.0                 # open tank 4 m tall (as TrixiParticles.jl's setu
 SENSOR_Y, SENSOR_SIZE = 0.006, 0.0084   # De Courcy et al. 2024 P1: y from 1.8 to 10.2 mm
 FRONT_WINDOW = 2.3             # compare the front for t* <= 2.3 (before the far wall)
 # Windows of t* over which the mean P1 is compared (first peak, decay, plateau, second rise).
-P_WINDOWS = [(2.4, 2.6), (2.6, 3.0), (3.0, 4.0), (4.0, 5.0), (5.0, 6.0), (6.0, 7.0)]
+P_WINDOWS = [(2.4, 2.6), (2.6, 2.8), (2.8, 3.0), (3.0, 4.0), (4.0, 5.0), (5.0, 6.0), (6.0, 7.0)]
 
 
 def geometry_sets(n, layers):

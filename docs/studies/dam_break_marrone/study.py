@@ -72,29 +72,46 @@ def reference_row():
     return row
 
 
+def running_mean(t, y, width):
+    """Mean of y over [t - width/2, t + width/2] where the window is covered (uniform samples)."""
+    k = max(1, int(round(width / np.median(np.diff(t)))))
+    mean = np.convolve(y, np.ones(k) / k, mode="valid")
+    return t[k // 2: k // 2 + len(mean)], mean
+
+
 def figure(series):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     ref = runs.read_csv(runs.FRONT_REF)
     tr, pr = runs.reference_pressure()
-    fig, ax = plt.subplots(1, 2, figsize=(13, 4.8))
+    fig, ax = plt.subplots(1, 3, figsize=(17, 4.8), gridspec_kw={"width_ratios": [1, 0.8, 1.3]})
     ax[0].plot(ref["t_sqrt_g_over_H"], ref["x_front_over_H"], "k-", lw=2.5,
                label="WCSPH H/400 (reference)")
+    m = ref["t_sqrt_g_over_H"] <= runs.FRONT_WINDOW + 1e-9
     for n, (t, x, p) in series.items():
-        ax[0].plot(t, x, lw=1.2, label="monosph H/%d" % n)
+        c = ax[0].plot(t, x, lw=1.2, label="monosph H/%d" % n)[0].get_color()
+        e = np.interp(ref["t_sqrt_g_over_H"][m], t, x) / ref["x_front_over_H"][m] - 1
+        ax[1].plot(ref["t_sqrt_g_over_H"][m], 100 * e, color=c, label="H/%d" % n)
     ax[0].axvline(runs.FRONT_WINDOW, color="grey", ls=":", lw=1)
     ax[0].set(xlim=(0, 2.6), ylim=(1.9, 5.5), xlabel="t (g/H)$^{1/2}$", ylabel="x$_f$ / H",
               title="surge front (largest particle centre x)")
     ax[0].legend()
-    ax[1].plot(tr, pr, "k-", lw=2.5, label="De Courcy et al. 2024 (H/400)")
-    for n, (t, x, p) in series.items():
-        ax[1].plot(t, p, lw=1.0, label="monosph H/%d" % n)
-    ax[1].set(xlim=(2, 7), ylim=(-0.5, 5), xlabel="t (g/H)$^{1/2}$", ylabel="p / ($\\rho$ g H)",
-              title="sensor P1, right wall, y = 1.8-10.2 mm")
+    ax[1].axhline(0, color="k", lw=1)
+    ax[1].set(xlim=(0, 2.3), xlabel="t (g/H)$^{1/2}$", ylabel="x$_f$ / x$_{f,ref}$ - 1 (%)",
+              title="front error against H/400")
     ax[1].legend()
+    ax[2].plot(tr, pr, "k-", lw=2.5, label="De Courcy et al. 2024 (H/400)")
+    for n, (t, x, p) in series.items():
+        k = t >= 2.0
+        c = ax[2].plot(t[k], p[k], lw=0.5, alpha=0.45)[0].get_color()
+        ax[2].plot(*running_mean(t[k], p[k], 0.1), color=c, lw=1.6,
+                   label="monosph H/%d (thin: every sample; thick: mean over 0.1)" % n)
+    ax[2].set(xlim=(2, 7), ylim=(-0.5, 5), xlabel="t (g/H)$^{1/2}$", ylabel="p / ($\\rho$ g H)",
+              title="sensor P1, right wall, y = 1.8-10.2 mm")
+    ax[2].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(runs.HERE, "dam_break_marrone.png"), dpi=110)
+    fig.savefig(os.path.join(runs.HERE, "dam_break_marrone.png"), dpi=100)
 
 
 def main():
