@@ -64,12 +64,13 @@ WallPressureProbe<D>::WallPressureProbe(Simulation<D>& sim, const ProbeSpec& spe
   for (int a = 0; a < D; ++a) centre_[a] = spec.point[a], n[a] = spec.axis[a];
   const double dp = sim.dp();
   const std::string& name = sim.bodies()[body].name;
-  const double d0 = nearest_of_body(sim, body, centre_);
-  if (d0 > 0.75 * dp)
+  // A point of the face is at most half a lattice diagonal, sqrt(D) dp / 2, from the outer layer.
+  const double d0 = nearest_of_body(sim, body, centre_), limit = (0.5 * std::sqrt(D) + 0.05) * dp;
+  if (d0 > limit)
     throw InputError(where + ".center: not on the face of '" + name +
                      fmt::format("' (its nearest particle is {:g} m away; on a face it is at most "
-                                 "0.75 dp = {:g} m)",
-                                 d0, 0.75 * dp));
+                                 "(sqrt({}) / 2 + 0.05) dp = {:g} m)",
+                                 d0, D, limit));
   const double din = nearest_of_body(sim, body, Vec<D>(centre_ - 0.5 * dp * n));
   const double dout = nearest_of_body(sim, body, Vec<D>(centre_ + 0.5 * dp * n));
   if (!(din < dout))

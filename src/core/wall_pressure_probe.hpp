@@ -20,7 +20,8 @@
 // particle at all for a sensor shorter than dp.
 //
 // At the start the probe checks that `center` lies on the face of `body` (the nearest particle
-// of the body at most 0.75 dp away, the face being dp/2 from its outer layer) and that `normal`
+// of the body at most (sqrt(d)/2 + 0.05) dp away, the face being dp/2 from its outer layer:
+// 0.76 dp in 2D, 0.92 dp in 3D) and that `normal`
 // points away from the body (InputError naming the key). MPI: per-point sums over the owned
 // particles, then over the ranks. Periodic images are not searched (a sensor on a wall).
 #include <string>
