@@ -46,8 +46,9 @@ def geometry_sets(n, layers):
     ], length
 
 
-def run(n, out, layers=3, extra=(), end=None, every=None):
-    """Runs H/n into `out` (one thread, frames only at the start and the end); returns summary."""
+def run(n, out, layers=3, extra=(), end=7.0 / TS, every=None):
+    """Runs H/n into `out` to t* = 7 unless `end` (one thread, frames only at the start and the
+    end); returns the summary."""
     sets, _ = geometry_sets(n, layers)
     sets += ["output.every=0"] + list(extra)
     if end is not None:
@@ -126,7 +127,7 @@ def main():
     ap.add_argument("n", type=int)
     ap.add_argument("--layers", type=int, default=3)
     ap.add_argument("--set", nargs="*", default=[])
-    ap.add_argument("--end", type=float)
+    ap.add_argument("--end", type=float, default=7.0 / TS, help="end time in s (default t* = 7)")
     ap.add_argument("--out")
     a = ap.parse_args()
     out = a.out or "/tmp/dam_break_marrone_H%d" % a.n
