@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "expression.hpp"
+#include "wall_pressure_probe.hpp"
 
 namespace monosph {
 
@@ -67,7 +68,8 @@ struct Probes<D>::Item {
   int field = -1, body = -1, bc = -1, target = -1;
   std::int64_t id = -1;  // tracked particle
   Expression weight;
-  Module<D>* module = nullptr;  // provides the values of a module's probe type
+  Module<D>* module = nullptr;                 // provides the values of a module's probe type
+  std::unique_ptr<WallPressureProbe<D>> wall;  // wall_pressure: the sensor's points
 };
 
 template <int D>
@@ -133,6 +135,8 @@ Probes<D>::Probes(Simulation<D>& sim) {
     if (s.type == "disorder" && !p.has("disorder"))
       throw InputError(where +
                        ".type: 'disorder' needs a solid body (the solid module computes it)");
+    if (s.type == "wall_pressure")  // checks that the sensor sits on the body's face
+      it->wall = std::make_unique<WallPressureProbe<D>>(sim, s, it->body, where);
     if (!s.weight_expr.empty())
       it->weight = Expression(s.weight_expr, where + ".weight", sim.scene().variables);
     if (s.type == "tracked") {  // the particle nearest to the point now, followed by its id
@@ -373,6 +377,8 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       long count = 0;
       for (long c : piece_sizes(all, D, 1.5 * sim.dp())) count += c >= s.min_particles;
       out.push_back(static_cast<double>(comm.sum(count)));
+    } else if (s.type == "wall_pressure") {  // mean interpolated pressure over the sensor
+      out.push_back(it->wall->sample(sim));
     } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
       double sum = 0;
       const auto& rm = sim.removed_mass();

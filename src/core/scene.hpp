@@ -182,6 +182,8 @@ struct ProbeSpec {
   int bins = 0;            // profile: number of bins along `axis`
   Point range;             // profile: [lo, hi] along `axis` (empty: the default range)
   int columns = 1;         // columns in probes.csv (name, or name_x, name_y...; 0: profile)
+  double size = 0;         // wall_pressure: sensor length (2D) or diameter (3D); centre in
+                           // `point`, unit normal (wall into fluid) in `axis`
 };
 
 struct ReferenceSpec {

@@ -47,7 +47,8 @@ const std::vector<std::string> kTypes = {"kinetic_energy",
                                          "lubrication_gap",
                                          "solid_contact_pairs",
                                          "solid_contact_force",
-                                         "solid_contact_neighbours"};
+                                         "solid_contact_neighbours",
+                                         "wall_pressure"};
 
 bool is_one_of(const std::string& type, std::initializer_list<const char*> types) {
   return std::any_of(types.begin(), types.end(), [&](const char* t) { return type == t; });
@@ -116,6 +117,34 @@ void read_profile(MapReader& q, ProbeSpec& ps, int dim) {
   }
 }
 
+// wall_pressure: `center` (a point on the wall face), `normal` (an axis or a vector, from the wall
+// into the fluid; stored as a unit vector in ps.axis) and `size` (sensor length in 2D, diameter
+// in 3D). The other types reject these keys as unknown.
+void read_sensor(MapReader& q, ProbeSpec& ps, int dim) {
+  ps.point = q.vector("center", dim);
+  const std::string at = q.at("normal");
+  auto n = q.node("normal");
+  Point normal(dim, 0.0);
+  if (n.IsScalar()) {
+    const std::string a = n.Scalar();
+    const int sign = !a.empty() && a[0] == '-' ? -1 : 1;
+    const std::string ax = sign < 0 || (!a.empty() && a[0] == '+') ? a.substr(1) : a;
+    const int k = ax == "x" ? 0 : ax == "y" ? 1 : ax == "z" ? 2 : -1;
+    if (k < 0 || k >= dim)
+      scene_error(at, "'" + a + "' is not an axis (x, -x, y, -y" + (dim == 3 ? ", z, -z" : "") +
+                          " or a vector)");
+    normal[k] = sign;
+  } else {
+    normal = as_vector(n, at, dim);
+  }
+  double n2 = 0;
+  for (double c : normal) n2 += c * c;
+  if (!(n2 > 0) || !std::isfinite(n2)) scene_error(at, "must be a finite non-zero vector");
+  for (double& c : normal) c /= std::sqrt(n2);
+  ps.axis = normal;
+  ps.size = q.positive("size");
+}
+
 // `weight` multiplies the integrand of integral, mean and kinetic_energy; others reject it.
 void read_weight(MapReader& q, ProbeSpec& ps, const Scene& s) {
   if (!q.has("weight")) return void(q.optional("weight"));
@@ -150,12 +179,17 @@ void check_body(const std::string& p, const ProbeSpec& ps, const Scene& s) {
     scene_error(p + ".body", "contact_energy is the energy of all contacts; it takes no body");
   const bool rigid = is_rigid_type(ps.type);
   if (rigid && ps.body.empty()) scene_error(p + ".body", "missing (the name of a rigid body)");
+  if (ps.type == "wall_pressure" && ps.body.empty())
+    scene_error(p + ".body", "missing (the name of the wall the sensor sits on)");
   if (ps.type == "solid_contact_force" && ps.body.empty())
     scene_error(p + ".body", "missing (the name of a solid body: the contact force on it)");
   if (ps.body.empty()) return;
   auto it = std::find_if(s.bodies.begin(), s.bodies.end(),
                          [&](const BodySpec& b) { return b.name == ps.body; });
   if (it == s.bodies.end()) scene_error(p + ".body", "no body named '" + ps.body + "'");
+  if (ps.type == "wall_pressure" && it->phase == "fluid")
+    scene_error(p + ".body",
+                "'" + ps.body + "' is a fluid; wall_pressure needs the wall the sensor sits on");
   if (rigid && it->phase != "rigid")
     scene_error(p + ".body", "'" + ps.body + "' is not a rigid body (phase " + it->phase + "); " +
                                  ps.type + " needs a body with phase: rigid");
@@ -213,6 +247,7 @@ ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& 
     ps.point = q.vector("point", dim);
   else
     q.optional("point");
+  if (ps.type == "wall_pressure") read_sensor(q, ps, dim);
   if (ps.type == "diameter") {
     ps.axis = as_vector(q.node("axis"), q.at("axis"), dim);
     double a2 = 0;
