@@ -45,7 +45,7 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   // Viscous form: Morris et al. 1997 (default) or the central 2 (d + 2) nu pi_ij of Sun et al.
   // 2017, which conserves angular momentum. A scene with rigid clusters needs the central form:
   // Morris's pair forces along v_ij put a spurious torque on a grain (a free cylinder in shear
-  // turned at 1.77 gamma/2 instead of 0.95; tests/unit/test_clusters.cpp).
+  // turned at 1.77 gamma/2 instead of 0.95; cases/couette_cylinder).
   bool any_rigid = false;
   for (const auto& b : sim.bodies()) any_rigid = any_rigid || b.phase == kRigid;
   for (const auto& b : sim.scene().bodies)
