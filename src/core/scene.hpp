@@ -3,6 +3,7 @@
 // allowed). Dimension-agnostic: vectors are std::vector<double> of length `dimension`.
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <map>
@@ -55,10 +56,18 @@ struct Material {
   double taylor_quinney = 0.9;  // eta of MMB Eq. 24
   double viscosity = 0;         // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
   double cavitation_pressure = -std::numeric_limits<double>::infinity();  // fluid: p >= it
+  // Fluid: p_b added to the EOS pressure, p = K (rho/rho0 - 1) + p_b (Morris, Fox & Zhu 1997,
+  // Sect. 2.2): keeps a confined flow's pressure positive against the tensile instability.
+  // Only for flows without a free surface (the fluid module stops a run that has one).
+  double background_pressure = 0;
   // `elasticity: neo_hookean`: compressible neo-Hookean PK2 stress from F (Ganzenmueller 2015
   // Eq. 44), total-Lagrangian bodies only; otherwise hypoelastic (Jaumann S + EOS pressure).
   bool neo_hookean = false;
   double pressure(double rho) const { return bulk_modulus * (rho / density - 1.0); }  // Eq. 13
+  // The fluid EOS: Eq. 13 held at the cavitation pressure, plus the background pressure.
+  double fluid_pressure(double rho) const {
+    return std::max(pressure(rho), cavitation_pressure) + background_pressure;
+  }
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
   double youngs_modulus() const {

@@ -334,6 +334,10 @@ void check_continua(const Scene& s) {
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const auto& bi = s.bodies[i];
     const std::string pi = "bodies[" + std::to_string(i) + "] (" + bi.name + ")";
+    const Material& mi = s.materials[bi.material];
+    if ((bi.phase == "solid" || bi.phase == "rigid") && mi.background_pressure > 0)
+      scene_error("materials." + mi.name + ".background_pressure",
+                  "applies to fluids only (body '" + bi.name + "' is " + bi.phase + ")");
     if (bi.phase == "solid" && !bi.total_lagrangian && s.materials[bi.material].neo_hookean)
       scene_error(pi + ".material", "elasticity: neo_hookean needs formulation: total_lagrangian");
     if (s.has_mirror() && bi.phase == "rigid")

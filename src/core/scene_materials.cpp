@@ -81,6 +81,8 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   } else {
     r.optional("cavitation_pressure");
   }
+  // Fluids without a free surface: a constant added to the EOS pressure (Morris et al. 1997).
+  m.background_pressure = r.non_negative("background_pressure", 0.0);
   // Stress from F for total-Lagrangian bodies (Ganzenmueller 2015 Eq. 44); default hypoelastic.
   m.neo_hookean =
       r.choice("elasticity", {"hypoelastic", "neo_hookean"}, "hypoelastic") == "neo_hookean";

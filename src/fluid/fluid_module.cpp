@@ -1,5 +1,7 @@
 #include "fluid_module.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 
@@ -43,7 +45,7 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   // Viscous form: Morris et al. 1997 (default) or the central 2 (d + 2) nu pi_ij of Sun et al.
   // 2017, which conserves angular momentum. A scene with rigid clusters needs the central form:
   // Morris's pair forces along v_ij put a spurious torque on a grain (a free cylinder in shear
-  // turned at 1.77 gamma/2 instead of 0.95; tests/unit/test_clusters.cpp).
+  // turned at 1.77 gamma/2 instead of 0.95; cases/couette_cylinder).
   bool any_rigid = false;
   for (const auto& b : sim.bodies()) any_rigid = any_rigid || b.phase == kRigid;
   for (const auto& b : sim.scene().bodies)
@@ -99,8 +101,8 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
-    if (ph[i] == kFluid)  // p = c0^2 (rho - rho0) (Sun Eq. 2), not below cavitation
-      pr[i] = std::max(mats[mt[i]].pressure(rho[i]), mats[mt[i]].cavitation_pressure);
+    if (ph[i] == kFluid)  // p = c0^2 (rho - rho0) (Sun Eq. 2), not below cavitation, + p_b
+      pr[i] = mats[mt[i]].fluid_pressure(rho[i]);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
@@ -155,6 +157,32 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
     }
   }
   sim.exchange({kgrad_, klam_, kpw_, kvw_});  // read through neighbours in rates and forces
+  if (!surface_checked_) check_no_free_surface(sim);
+}
+
+template <int D>
+void FluidModule<D>::check_no_free_surface(Simulation<D>& sim) {
+  // A background pressure pushes a free surface outwards (its particles lack the neighbours
+  // whose p_b would balance their own): a scene with one is an input error, found on the
+  // lattice at t = 0 by lambda (about 1 inside and at walls, 0.4-0.7 on a lattice's free
+  // surface). A restart (t > 0, disordered particles) is not checked again.
+  surface_checked_ = true;
+  if (sim.time() > 0) return;
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto mt = p.material();
+  auto lam = p.template view<double>(klam_);
+  const auto& mats = sim.materials();
+  std::vector<double> count(mats.size(), 0.0);
+  for (std::size_t i = 0; i < sim.owned(); ++i)
+    if (ph[i] == kFluid && mats[mt[i]].background_pressure > 0 && lam[i] < 0.75) count[mt[i]] += 1;
+  sim.comm().sum(count);
+  for (std::size_t k = 0; k < mats.size(); ++k)
+    if (count[k] > 0)
+      throw InputError(fmt::format(
+          "materials.{}.background_pressure: the fluid has a free surface ({:g} particles with "
+          "lambda < 0.75 at t = 0); a background pressure is for flows without one",
+          mats[k].name, count[k]));
 }
 
 template <int D>
@@ -337,13 +365,19 @@ void FluidModule<D>::drift(Simulation<D>& sim, double dt) {
 
 template <int D>
 double FluidModule<D>::max_dt(Simulation<D>& sim) {
-  // Viscous limit dt <= 0.125 h^2 / nu (Morris et al. 1997); the acoustic and force limits are
-  // the core's (the fluid's wave speed is c0).
+  // Viscous limit dt <= 0.125 h^2 / nu (Morris et al. 1997, Eq. 23); the acoustic and force
+  // limits are the core's (the fluid's wave speed is c0). The central form 2 (d + 2) nu pi_ij is
+  // nu lap v + 2 nu grad div v (Espanol & Revenga 2003): its longitudinal modes diffuse with 3 nu,
+  // so its limit is a third of Morris's. On a square lattice the largest eigenvalue of the
+  // discrete operator (the explicit velocity update is stable for dt lambda < 2) is, in nu/dp^2,
+  // cubic spline h = 1.3 dp: 3.35 Morris, 9.33 central; Wendland C2: 3.66, 10.1. At 0.125 h^2/nu
+  // the central form was unstable with Wendland (a free cylinder in shear blew up) and marginal
+  // with the cubic spline (dt lambda = 1.97; docs/studies/couette).
   double nu = 0;
   for (double x : nu_) nu = std::max(nu, x);
   if (nu <= 0) return std::numeric_limits<double>::infinity();
   const double h = sim.kernel().h();
-  return 0.125 * h * h / nu;
+  return 0.125 * h * h / nu / (central_ ? 3.0 : 1.0);
 }
 
 template <int D>

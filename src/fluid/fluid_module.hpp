@@ -2,7 +2,8 @@
 // Weakly compressible delta-plus SPH fluid (Sun, Colagrossi, Marrone & Zhang 2017) with the
 // generalised wall condition of Adami, Hu & Adams 2012 (equations: shared/reference/
 // equations.md, sections 3 and 4; docs/theory.md).
-//  - EOS p = c0^2 (rho - rho0) (Sun 2017, Eq. 2; c0 from the material's sound speed).
+//  - EOS p = c0^2 (rho - rho0) (Sun 2017, Eq. 2; c0 from the material's sound speed), plus the
+//    material's background pressure p_b (Morris et al. 1997; flows without a free surface).
 //  - Continuity with the delta-SPH diffusive term and the renormalised density gradient
 //    (Antuono et al. 2010/2012), momentum with the symmetric pressure pair (p_i + p_j) and the
 //    Morris et al. 1997 viscous term (Newtonian nu) plus the delta-SPH alpha term (optional).
@@ -32,10 +33,12 @@ class FluidModule : public Module<D> {
   void probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<double>& out) override;
 
  private:
+  void check_no_free_surface(Simulation<D>& sim);  // background pressure: none allowed
   int kpw_, kvw_, kgrad_, klam_, kshift_, kff_, kaw_ = -1, kvprev_ = -1;
   std::vector<double> c0_, rho0_, nu_;  // per material
   std::vector<Vec<D>> gb_;              // body force per body
   bool any_wall_ = false;
+  bool surface_checked_ = false;
   bool central_ = false;  // central viscous form 2 (d + 2) nu pi_ij instead of Morris
 };
 

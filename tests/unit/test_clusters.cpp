@@ -330,54 +330,9 @@ TEST(Clusters, ResultsDoNotDependOnThreadCount) {
   test::expect_thread_independent<2>([] { return build<2>(settle_scene()); }, 100);
 }
 
-TEST(Clusters, CylinderInCouetteFlowRotatesAtHalfTheShearRate) {
-  // A neutrally buoyant cylinder (a = 4 dp) at the centre of a plane Couette flow (walls at
-  // +-U, gap 40 dp, period 80 dp) starts at rest and spins up to omega = -gamma/2, the
-  // Stokes-limit rotation of a free cylinder in simple shear (equations.md Sect. 5, check 3),
-  // within 5 % (particle Reynolds number gamma a^2/nu = 0.02; measured 0.983, the walls slow it
-  // a little). Tests the torque of the fluid on a cluster: with Morris's viscous form (pair forces
-  // along v_ij, no angular momentum conservation) the cylinder turned at 1.77 gamma/2.
-  const double dp = 5e-4, gap = 40 * dp, u = 0.05, gamma = 2 * u / gap;
-  auto sim = build<2>(fmt::format(R"Y(
-name: couette
-dimension: 2
-dp: {0}
-domain: {{min: [0, {1}], max: [{11}, {3}], periodic: [x]}}
-materials:
-  fluid: {{density: 1000, sound_speed: 1.0, viscosity: 1.0}}
-  neutral: {{density: 1000, bulk_modulus: 1e6, shear_modulus: 1e6}}
-bodies:
-  - name: cylinder
-    phase: rigid
-    material: neutral
-    shape: {{circle: {{center: [{12}, {5}], radius: {6}}}}}
-  - name: fluid
-    phase: fluid
-    material: fluid
-    fill: rest
-    shape: {{box: {{min: [0, 0], max: [{11}, {7}]}}}}
-    density_diffusion: {{delta: 0.1}}
-    initial: {{velocity: ["{8}*(y - {5})", "0"]}}
-  - name: bottom
-    phase: wall
-    material: fluid
-    shape: {{box: {{min: [0, {1}], max: [{11}, 0]}}}}
-    initial: {{velocity: ["{9}", "0"]}}
-  - name: top
-    phase: wall
-    material: fluid
-    shape: {{box: {{min: [0, {7}], max: [{11}, {3}]}}}}
-    initial: {{velocity: ["{10}", "0"]}}
-end_time: 1
-)Y",
-                                  dp, -3 * dp, gap, gap + 3 * dp, gap / 2, gap / 2, 4 * dp, gap,
-                                  gamma, -u, u, 2 * gap, gap));
-  auto& cm = module<ClusterModule<2>>(*sim);
-  const double t_end = 0.06;  // 15 spin-up times a^2/nu; omega settles by 0.04 s
-  while (sim->time() < t_end) sim->advance(t_end);
-  EXPECT_NEAR(cm.cluster(0).omega[2] / (-gamma / 2), 1.0, 0.05);
-  EXPECT_LT(cm.cluster(0).velocity.norm(), 0.02 * u);  // stays at the centre
-}
+// The free cylinder in plane Couette flow (the torque of the fluid on a cluster, over 10 shear
+// times) is the validation test CouetteCylinder.TurnsAtTheConfinedStokesRateWithoutPairingOver10-
+// ShearTimes (tests/validation/test_fluid_cases.cpp; cases/couette_cylinder).
 
 TEST(Clusters, SphereInFluidMomentumBalanceIn3D) {
   // 3D: an iron sphere in a water box under gravity. Every step the momentum of fluid + sphere
