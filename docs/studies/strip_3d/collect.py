@@ -3,7 +3,12 @@
 and case) into strip_3d.csv / strip_3d.md (signed period error, observed orders, wall time,
 memory) and draws convergence.png (|error| against particles through the thickness) and
 tip.png (tip / mid-span deflection at 4 through the thickness).
-Usage: collect.py STUDY_ROOT (folders named <formulation>_<case>, e.g. tl25_cantilever)."""
+Usage: collect.py STUDY_ROOT (folders named <formulation>_<case>, e.g. tl25_cantilever).
+The rows of the committed strip_3d.csv that STUDY_ROOT has no run for are kept (the run folders
+are not committed), so a later session can add runs without repeating the others. A run folder
+may hold time.txt (/usr/bin/time -f "%e %U %S %M": CPU seconds) and load_start.txt /
+load_end.txt / load.log (/proc/loadavg at the start, the end and every 30 s): the machine's load
+beside the wall time. tip.png is redrawn only when every n = 4 run is in STUDY_ROOT."""
 import csv, glob, json, math, os, sys
 
 import matplotlib
@@ -15,6 +20,25 @@ LABEL = {"eulerian": "Eulerian, xi = 0.5, Newmark 0.6", "tl": "total Lagrangian,
          "tl25": "total Lagrangian, alpha = 25", "enog": "non-hourglass (Wendland)"}
 root = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
+KEYS = ["case", "formulation", "n", "dp", "particles", "steps", "wall_seconds", "cpu_seconds",
+        "load_start", "load_end", "load_mean", "peak_memory_mb", "period", "reference", "error"]
+
+
+def load_info(run):
+    """CPU seconds and 1-minute load averages of a run folder (empty strings when not recorded)."""
+    info = dict(cpu_seconds="", load_start="", load_end="", load_mean="")
+    try:
+        e, u, sy, _ = open(os.path.join(run, "time.txt")).read().split()[-4:]
+        info["cpu_seconds"] = round(float(u) + float(sy), 1)
+        info["load_start"] = float(open(os.path.join(run, "load_start.txt")).read().split()[0])
+        info["load_end"] = float(open(os.path.join(run, "load_end.txt")).read().split()[0])
+        samples = [float(l.split()[1]) for l in open(os.path.join(run, "load.log")) if l.strip()]
+        info["load_mean"] = round(sum(samples) / len(samples), 2) if samples else ""
+    except (OSError, ValueError, IndexError):
+        pass
+    return info
+
+
 rows = []
 for study in sorted(glob.glob(os.path.join(root, "*_*"))):
     if not os.path.isdir(study):
@@ -34,12 +58,25 @@ for study in sorted(glob.glob(os.path.join(root, "*_*"))):
                          steps=j["steps"], wall_seconds=round(j["wall_seconds"], 1),
                          peak_memory_mb=round(j["peak_memory_bytes"] / 1e6, 1),
                          period=round(m["value"], 6), reference=m["reference"],
-                         error=round(e, 5), run=run))
+                         error=round(e, 5), run=run, **load_info(run)))
+have = {(r["case"], r["formulation"], r["n"]) for r in rows}
+try:
+    with open(os.path.join(here, "strip_3d.csv")) as f:
+        for r in csv.DictReader(f):
+            if (r["case"], r["formulation"], int(r["n"])) in have:
+                continue
+            r = {k: r.get(k) or "" for k in KEYS}
+            for k in ("n", "particles", "steps"):
+                r[k] = int(r[k])
+            for k in ("dp", "wall_seconds", "peak_memory_mb", "period", "reference", "error"):
+                r[k] = float(r[k])
+            r["run"] = None
+            rows.append(r)
+except OSError:
+    pass
 rows.sort(key=lambda r: (r["case"], r["formulation"], r["n"]))
-keys = ["case", "formulation", "n", "dp", "particles", "steps", "wall_seconds", "peak_memory_mb",
-        "period", "reference", "error"]
 with open(os.path.join(here, "strip_3d.csv"), "w", newline="") as f:
-    w = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
+    w = csv.DictWriter(f, fieldnames=KEYS, extrasaction="ignore")
     w.writeheader()
     w.writerows(rows)
 
@@ -68,6 +105,15 @@ with open(os.path.join(here, "strip_3d.md"), "w") as f:
             f.write(f"| {LABEL[form]} | {cell(3)} | {cell(4)} | {cell(6)} | {cell(8)} | "
                     f"{'%.2f' % o if o else ''} | {' / '.join(str(by[n]['wall_seconds']) for n in sorted(by))} | "
                     f"{' / '.join(str(by[n]['peak_memory_mb']) for n in sorted(by))} |\n")
+    timed = [r for r in rows if r["cpu_seconds"] != ""]
+    if timed:
+        f.write("\n### runs with CPU time and load (1-minute load average of the 2-core machine)\n\n"
+                "| case | formulation | n | particles | steps | wall [s] | CPU [s] | load start / mean / end |"
+                "\n|---|---|---|---|---|---|---|---|\n")
+        for r in timed:
+            f.write(f"| {r['case']} | {LABEL[r['formulation']]} | {r['n']} | {r['particles']} | "
+                    f"{r['steps']} | {r['wall_seconds']} | {r['cpu_seconds']} | "
+                    f"{r['load_start']} / {r['load_mean']} / {r['load_end']} |\n")
 
 fig, axes = plt.subplots(1, 2, figsize=(10, 4))
 for ax, case in zip(axes, ("cantilever", "cc")):
@@ -86,10 +132,13 @@ axes[0].legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(os.path.join(here, "convergence.png"), dpi=110)
 
+n4 = [r for r in rows if r["n"] == 4]
 fig, axes = plt.subplots(1, 2, figsize=(10, 4))
 for ax, case in zip(axes, ("cantilever", "cc")):
+    if any(r["run"] is None for r in n4):
+        break  # the committed tip.png stays: not every n = 4 run is in STUDY_ROOT
     for form in ("eulerian", "tl", "tl25", "enog"):
-        rs = [r for r in rows if r["case"] == case and r["formulation"] == form and r["n"] == 4]
+        rs = [r for r in n4 if r["case"] == case and r["formulation"] == form]
         if not rs:
             continue
         t, y = [], []
@@ -105,6 +154,7 @@ for ax, case in zip(axes, ("cantilever", "cc")):
     ax.set_title(("tip" if case == "cantilever" else "mid-span") + ", 4 through the thickness")
     ax.grid(True, lw=0.3)
 axes[0].legend(fontsize=8)
-fig.tight_layout()
-fig.savefig(os.path.join(here, "tip.png"), dpi=110)
+if not any(r["run"] is None for r in n4):
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "tip.png"), dpi=110)
 print(open(os.path.join(here, "strip_3d.md")).read())
