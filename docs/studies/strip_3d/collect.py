@@ -8,7 +8,9 @@ The rows of the committed strip_3d.csv that STUDY_ROOT has no run for are kept (
 are not committed), so a later session can add runs without repeating the others. A run folder
 may hold time.txt (/usr/bin/time -f "%e %U %S %M": CPU seconds) and load_start.txt /
 load_end.txt / load.log (/proc/loadavg at the start, the end and every 30 s): the machine's load
-beside the wall time. tip.png is redrawn only when every n = 4 run is in STUDY_ROOT."""
+beside the wall time. tip.png is redrawn only when every n = 4 run is in STUDY_ROOT. A run folder whose name ends in
+_half ran the half z > 0 with a mirror at mid-width (domain.mirror z_min): the same period, half
+the particles; its particles, wall time and memory are marked (half)."""
 import csv, glob, json, math, os, sys
 
 import matplotlib
@@ -20,7 +22,7 @@ LABEL = {"eulerian": "Eulerian, xi = 0.5, Newmark 0.6", "tl": "total Lagrangian,
          "tl25": "total Lagrangian, alpha = 25", "enog": "non-hourglass (Wendland)"}
 root = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
-KEYS = ["case", "formulation", "n", "dp", "particles", "steps", "wall_seconds", "cpu_seconds",
+KEYS = ["case", "formulation", "n", "width", "dp", "particles", "steps", "wall_seconds", "cpu_seconds",
         "load_start", "load_end", "load_mean", "peak_memory_mb", "period", "reference", "error"]
 
 
@@ -58,7 +60,8 @@ for study in sorted(glob.glob(os.path.join(root, "*_*"))):
                          steps=j["steps"], wall_seconds=round(j["wall_seconds"], 1),
                          peak_memory_mb=round(j["peak_memory_bytes"] / 1e6, 1),
                          period=round(m["value"], 6), reference=m["reference"],
-                         error=round(e, 5), run=run, **load_info(run)))
+                         error=round(e, 5), run=run, **load_info(run),
+                         width="half" if run.endswith("_half") else "full"))
 have = {(r["case"], r["formulation"], r["n"]) for r in rows}
 try:
     with open(os.path.join(here, "strip_3d.csv")) as f:
@@ -66,6 +69,7 @@ try:
             if (r["case"], r["formulation"], int(r["n"])) in have:
                 continue
             r = {k: r.get(k) or "" for k in KEYS}
+            r["width"] = r["width"] or "full"
             for k in ("n", "particles", "steps"):
                 r[k] = int(r[k])
             for k in ("dp", "wall_seconds", "peak_memory_mb", "period", "reference", "error"):
@@ -81,6 +85,43 @@ with open(os.path.join(here, "strip_3d.csv"), "w", newline="") as f:
     w.writerows(rows)
 
 
+def update_study_folder(r):
+    """The committed monosph-study table of r's folder (study.csv / study.md) with r's row: the row
+    of the same dp replaced (an interrupted one), or added."""
+    folder = os.path.join(here, f"{r['formulation']}_{r['case']}")
+    j = json.load(open(os.path.join(r["run"], "summary.json")))
+    m = j["metrics"]["period"]
+    status = j["status"] + (" (half, mirror)" if r["width"] == "half" else "")
+    new = dict(dp=repr(j["dp"]), particles=str(j["particles"]), steps=str(j["steps"]),
+               wall_seconds=f"{j['wall_seconds']:.6g}",
+               particle_steps_per_second=f"{j['particle_steps_per_second']:.6g}", status=status,
+               period_value=f"{m['value']:.9g}", period_relative_error=f"{m['relative_error']:.9g}")
+    with open(os.path.join(folder, "study.csv")) as f:
+        rd = csv.DictReader(f)
+        head, old = rd.fieldnames, [row for row in rd if float(row["dp"]) != j["dp"]]
+    table = sorted(old + [new], key=lambda row: -float(row["dp"]))
+    with open(os.path.join(folder, "study.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=head, lineterminator="\n")
+        w.writeheader()
+        w.writerows(table)
+    title = open(os.path.join(folder, "study.md")).readline()
+    with open(os.path.join(folder, "study.md"), "w") as f:
+        f.write(title + "\n| dp | particles | wall [s] | particle-steps/s | period | error | status |\n"
+                "|---|---|---|---|---|---|---|\n")
+        for row in table:
+            ok = row["period_value"] != ""
+            f.write(f"| {row['dp']} | {row['particles']} | {float(row['wall_seconds']):.2f} | "
+                    f"{float(row['particle_steps_per_second']):.3g} | "
+                    f"{'%.6g' % float(row['period_value']) if ok else '–'} | "
+                    f"{'%.2e' % float(row['period_relative_error']) if ok else '–'} | "
+                    f"{row['status']} |\n")
+
+
+for r in rows:
+    if r["run"] is not None:
+        update_study_folder(r)
+
+
 def order(rs):
     """Least-squares slope of log|e| against log n (rs sorted by n); None with < 2 points."""
     pts = [(math.log(r["n"]), math.log(abs(r["error"]))) for r in rs if r["error"] != 0]
@@ -89,6 +130,10 @@ def order(rs):
     mx = sum(p[0] for p in pts) / len(pts)
     my = sum(p[1] for p in pts) / len(pts)
     return -sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
+
+
+def mark(r, key):
+    return f"{r[key]} (half)" if r["width"] == "half" else str(r[key])
 
 
 with open(os.path.join(here, "strip_3d.md"), "w") as f:
@@ -103,15 +148,15 @@ with open(os.path.join(here, "strip_3d.md"), "w") as f:
             cell = lambda n: f"{100 * by[n]['error']:+.1f} %" if n in by else "not run"
             o = order(rs)
             f.write(f"| {LABEL[form]} | {cell(3)} | {cell(4)} | {cell(6)} | {cell(8)} | "
-                    f"{'%.2f' % o if o else ''} | {' / '.join(str(by[n]['wall_seconds']) for n in sorted(by))} | "
-                    f"{' / '.join(str(by[n]['peak_memory_mb']) for n in sorted(by))} |\n")
+                    f"{'%.2f' % o if o else ''} | {' / '.join(mark(by[n], 'wall_seconds') for n in sorted(by))} | "
+                    f"{' / '.join(mark(by[n], 'peak_memory_mb') for n in sorted(by))} |\n")
     timed = [r for r in rows if r["cpu_seconds"] != ""]
     if timed:
         f.write("\n### runs with CPU time and load (1-minute load average of the 2-core machine)\n\n"
-                "| case | formulation | n | particles | steps | wall [s] | CPU [s] | load start / mean / end |"
-                "\n|---|---|---|---|---|---|---|---|\n")
+                "| case | formulation | n | width | particles | steps | wall [s] | CPU [s] | load start / mean / end |"
+                "\n|---|---|---|---|---|---|---|---|---|\n")
         for r in timed:
-            f.write(f"| {r['case']} | {LABEL[r['formulation']]} | {r['n']} | {r['particles']} | "
+            f.write(f"| {r['case']} | {LABEL[r['formulation']]} | {r['n']} | {r['width']} | {r['particles']} | "
                     f"{r['steps']} | {r['wall_seconds']} | {r['cpu_seconds']} | "
                     f"{r['load_start']} / {r['load_mean']} / {r['load_end']} |\n")
 
@@ -133,28 +178,26 @@ fig.tight_layout()
 fig.savefig(os.path.join(here, "convergence.png"), dpi=110)
 
 n4 = [r for r in rows if r["n"] == 4]
-fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-for ax, case in zip(axes, ("cantilever", "cc")):
-    if any(r["run"] is None for r in n4):
-        break  # the committed tip.png stays: not every n = 4 run is in STUDY_ROOT
-    for form in ("eulerian", "tl", "tl25", "enog"):
-        rs = [r for r in n4 if r["case"] == case and r["formulation"] == form]
-        if not rs:
-            continue
-        t, y = [], []
-        with open(os.path.join(rs[0]["run"], "probes.csv")) as f:
-            rd = csv.DictReader(f)
-            col = [c for c in rd.fieldnames if c.endswith("_y")][0]
-            for row in rd:
-                t.append(float(row["time"]))
-                y.append(float(row[col]) - 0.0025)  # the tracked particle starts at y = dp/2
-        ax.plot(t, y, label=LABEL[form])
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("deflection [m]")
-    ax.set_title(("tip" if case == "cantilever" else "mid-span") + ", 4 through the thickness")
-    ax.grid(True, lw=0.3)
-axes[0].legend(fontsize=8)
-if not any(r["run"] is None for r in n4):
+if all(r["run"] is not None for r in n4):  # else the committed tip.png stays
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, case in zip(axes, ("cantilever", "cc")):
+        for form in ("eulerian", "tl", "tl25", "enog"):
+            rs = [r for r in n4 if r["case"] == case and r["formulation"] == form]
+            if not rs:
+                continue
+            t, y = [], []
+            with open(os.path.join(rs[0]["run"], "probes.csv")) as f:
+                rd = csv.DictReader(f)
+                col = [c for c in rd.fieldnames if c.endswith("_y")][0]
+                for row in rd:
+                    t.append(float(row["time"]))
+                    y.append(float(row[col]) - 0.0025)  # the tracked particle starts at y = dp/2
+            ax.plot(t, y, label=LABEL[form])
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("deflection [m]")
+        ax.set_title(("tip" if case == "cantilever" else "mid-span") + ", 4 through the thickness")
+        ax.grid(True, lw=0.3)
+    axes[0].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(here, "tip.png"), dpi=110)
 print(open(os.path.join(here, "strip_3d.md")).read())
