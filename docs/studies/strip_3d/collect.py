@@ -221,6 +221,7 @@ for row, against in enumerate(("Euler-Bernoulli", "complete")):
             if rs:
                 ax.loglog([r["n"] for r in rs], [abs(v) for v in e], "o-", label=LABEL[form])
         ax.axhline(0.05, color="grey", ls="--", lw=0.8)
+        ax.set_ylim(0.005, 0.4)
         ax.set_xticks([3, 4, 6, 8])
         ax.set_xticklabels(["3", "4", "6", "8"])
         ax.set_xlabel("particles through the thickness")
