@@ -47,6 +47,8 @@ const Case kCases[] = {
     {"lubrication_no_rigid.yaml", "lubrication: needs a rigid body"},
     {"lubrication_min_gap.yaml", "lubrication.min_gap: must be below lubrication.cutoff"},
     {"cavitation_positive.yaml", "materials.water.cavitation_pressure: must be <= 0"},
+    {"background_pressure_free_surface.yaml",
+     "materials.water.background_pressure: the fluid has a free surface"},
     {"unknown_variable.yaml", "bodies[0] (block).initial.velocity[0]: invalid expression 'sped'"},
     {"weight_ignored.yaml",
      "probes.list[0].weight: only integral, mean and kinetic_energy probes take a weight"},
