@@ -10,7 +10,10 @@ may hold time.txt (/usr/bin/time -f "%e %U %S %M": CPU seconds) and load_start.t
 load_end.txt / load.log (/proc/loadavg at the start, the end and every 30 s): the machine's load
 beside the wall time. tip.png is redrawn only when every n = 4 run is in STUDY_ROOT. A run folder whose name ends in
 _half ran the half z > 0 with a mirror at mid-width (domain.mirror z_min): the same period, half
-the particles; its particles, wall time and memory are marked (half)."""
+the particles; its particles, wall time and memory are marked (half).
+STUDY_ROOT/checks/<formulation>_<case>_<check>/run* (check: full / half, the mirror against the
+full width; slow, released at a tenth of the speed, 0.0285 m/s) go to checks.csv and the last
+table of strip_3d.md."""
 import csv, glob, json, math, os, sys
 
 import matplotlib
@@ -212,6 +215,38 @@ with open(os.path.join(here, "strip_3d.md"), "w") as f:
             f.write(f"| {r['case']} | {LABEL[r['formulation']]} | {r['n']} | {r['width']} | {r['particles']} | "
                     f"{r['steps']} | {r['wall_seconds']} | {r['cpu_seconds']} | "
                     f"{r['load_start']} / {r['load_mean']} / {r['load_end']} |\n")
+
+checks = []
+for run in sorted(glob.glob(os.path.join(root, "checks", "*_*_*", "run*"))):
+    try:
+        j = json.load(open(os.path.join(run, "summary.json")))
+    except (OSError, ValueError):
+        continue
+    form, case, what = os.path.basename(os.path.dirname(run)).split("_")
+    checks.append(dict(check="mirror" if what in ("full", "half") else what, case=case,
+                       formulation=form, n=round(H / j["dp"]),
+                       width="half" if run.endswith("_half") else "full",
+                       speed=0.0285 if what == "slow" else 0.285, particles=j["particles"],
+                       steps=j["steps"], wall_seconds=round(j["wall_seconds"], 1),
+                       cpu_seconds=load_info(run)["cpu_seconds"],
+                       period=f"{j['metrics']['period']['value']:.9f}"))
+if checks:
+    checks.sort(key=lambda r: (r["check"], r["case"], r["formulation"], r["n"], r["width"]))
+    with open(os.path.join(here, "checks.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(checks[0]), lineterminator="\n")
+        w.writeheader()
+        w.writerows(checks)
+    with open(os.path.join(here, "strip_3d.md"), "a") as f:
+        f.write("\n### checks: mirror against full width; released at a tenth of the speed\n\n"
+                "| check | case | formulation | n | width | speed [m/s] | particles | steps | wall [s] | "
+                "CPU [s] | period [s] | at 0.285 m/s [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for c in checks:
+            same = [r for r in rows if (r["case"], r["formulation"], r["n"]) ==
+                    (c["case"], c["formulation"], c["n"])]
+            f.write(f"| {c['check']} | {c['case']} | {LABEL[c['formulation']]} | {c['n']} | "
+                    f"{c['width']} | {c['speed']} | {c['particles']} | {c['steps']} | "
+                    f"{c['wall_seconds']} | {c['cpu_seconds']} | {c['period']} | "
+                    f"{same[0]['period'] if same else ''} |\n")
 
 fig, axes = plt.subplots(2, 2, figsize=(10, 8))
 for row, against in enumerate(("Euler-Bernoulli", "complete")):
