@@ -215,9 +215,9 @@ TEST(SolidContact, WarnsOnceWhenSolidBodiesWouldPassThroughEachOther) {
 }
 
 TEST(SolidContact, RubberRingsAsTwoContinuaReboundAndSeparate) {
-  // cases/rubber_rings/scene_contact.yaml (rings filled by shells; full run, ~11 s on one lightly loaded
-  // thread): measured restitution 0.809 (shared continuum 0.790), smallest distance 0.496 dp (0.339
-  // with the lattice fill).
+  // cases/rubber_rings/scene_contact.yaml (rings filled by shells; full run, ~11 s on one lightly
+  // loaded thread): measured restitution 0.809 (shared continuum 0.790), smallest distance 0.496 dp
+  // (0.339 with the lattice fill).
   const std::string out = out_dir("rings_contact");
   auto r = run_monosph("run " + source("cases/rubber_rings/scene_contact.yaml") + " --out " + out +
                        " --quiet --threads 1 --set output.every=1");
