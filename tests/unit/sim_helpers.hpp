@@ -19,6 +19,16 @@ std::unique_ptr<Simulation<D>> build(const std::string& text) {
   return sim;
 }
 
+// The InputError message of loading `text` ("" when it loads).
+inline std::string load_error(const std::string& text) {
+  try {
+    load_scene_text(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 template <class M, int D>
 M& module(Simulation<D>& sim) {
   for (auto& m : sim.modules())

@@ -47,15 +47,7 @@ int clusters_of(Simulation<2>& sim, int b) {
   return n;
 }
 
-// The InputError message of loading `text` ("" when it loads).
-std::string load_error(const std::string& text) {
-  try {
-    load_scene_text(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::load_error;
 
 // A fluid box [0, 1] x [0, 0.5] (dp 0.05) at rest but for the initial velocity field, and probes.
 std::string channel(const std::string& velocity, const std::string& probes) {

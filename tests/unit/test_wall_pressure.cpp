@@ -10,6 +10,7 @@
 #include "core/probes.hpp"
 #include "core/scene_reader.hpp"
 #include "core/wall_pressure_probe.hpp"
+#include "sim_helpers.hpp"
 
 using namespace monosph;
 
@@ -60,14 +61,7 @@ std::unique_ptr<Simulation<2>> hydrostatic(const std::string& probes) {
   return sim;
 }
 
-std::string load_error(const std::string& text) {
-  try {
-    load_scene_text(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::load_error;
 
 std::string probes_error(const std::string& probes) {
   auto sim = std::make_unique<Simulation<2>>(load_scene_text(tank(probes)));
