@@ -111,6 +111,11 @@ struct BodySpec {
   // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),
   // the anti-clustering term R (W_ij / W(dp))^n.
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;
+  // `shifting: {form: transport_velocity, pressure: P}`: Adami, Hu & Adams 2013 shift velocity
+  // from a constant background pressure P (> 0; 0: the delta-plus form above).
+  double shift_pb = 0;
+  // `shifting: {consistent: true}`: the ALE terms of Sun et al. 2019 in continuity and momentum.
+  bool shift_consistent = false;
   bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
   bool non_negative_wall_pressure = false;  // Adami p_w clipped at 0 (no suction at free surfaces)
   // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular

@@ -219,9 +219,15 @@ void read_fluid_keys(MapReader& b, BodySpec& body, const std::string& p) {
   if (b.has("shifting")) {  // delta-plus particle shifting (Sun et al. 2017)
     if (body.phase != "fluid") scene_error(p + ".shifting", "applies to fluid bodies only");
     MapReader sh(b.node("shifting"), p + ".shifting");
-    body.shift_speed = sh.positive("speed");
-    body.shift_R = sh.non_negative("R", 0.2);
-    body.shift_n = sh.positive("n", 4.0);
+    // delta_plus (Sun et al. 2017, speed U) or transport_velocity (Adami et al. 2013, pressure P)
+    if (sh.choice("form", {"delta_plus", "transport_velocity"}, "delta_plus") == "delta_plus") {
+      body.shift_speed = sh.positive("speed");
+      body.shift_R = sh.non_negative("R", 0.2);
+      body.shift_n = sh.positive("n", 4.0);
+    } else {
+      body.shift_pb = sh.positive("pressure");
+    }
+    body.shift_consistent = sh.boolean("consistent", false);  // Sun et al. 2019 ALE terms
     sh.finish();
   } else {
     b.optional("shifting");

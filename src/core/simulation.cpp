@@ -56,6 +56,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
     info.erosion = b.erosion;
     info.group = g;
     info.shift_speed = b.shift_speed, info.shift_R = b.shift_R, info.shift_n = b.shift_n;
+    info.shift_pb = b.shift_pb, info.shift_consistent = b.shift_consistent;
     info.no_slip = b.no_slip;
     info.non_negative_wall_pressure = b.non_negative_wall_pressure;
     info.damping = b.damping;

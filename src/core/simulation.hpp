@@ -93,8 +93,10 @@ struct BodyInfo {
   double temperature = 0;             // initial temperature (K)
   int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
   double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)
-  bool no_slip = true;                                 // wall-like body seen by the fluid
-  bool non_negative_wall_pressure = false;             // its Adami pressure clipped at 0
+  double shift_pb = 0;                      // transport-velocity shifting (Adami et al. 2013), Pa
+  bool shift_consistent = false;            // Sun et al. 2019 ALE terms with the shift
+  bool no_slip = true;                      // wall-like body seen by the fluid
+  bool non_negative_wall_pressure = false;  // its Adami pressure clipped at 0
   int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls,
                   // -3 rigid)
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/sph_equations.hpp"
+#include "shifting_terms.hpp"
 
 namespace monosph {
 
@@ -51,6 +52,10 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   for (const auto& b : sim.scene().bodies)
     if (b.phase == "fluid")
       central_ = central_ || b.viscous_form == "central" || (b.viscous_form == "auto" && any_rigid);
+  for (const auto& b : sim.bodies()) {
+    any_shift_ = any_shift_ || b.shift_speed > 0 || b.shift_pb > 0;
+    any_consistent_ = any_consistent_ || b.shift_consistent;
+  }
   if (any_wall_) {
     kaw_ = p.add_field("wall_acceleration", D);
     kvprev_ = p.add_field("wall_previous_velocity", D);
@@ -198,13 +203,15 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
   auto mt = p.material();
   auto bd = p.body();
   auto grad = p.template view<Vec<D>>(kgrad_);
+  auto du = p.template view<Vec<D>>(kshift_);  // shift velocity (zero on wall-like particles)
   const double h = sim.kernel().h();
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] != kFluid) continue;  // walls keep drho = 0 (nothing writes it)
     const double delta = bodies[bd[i]].delta;
-    double div = 0, diff = 0;
+    const bool ale = bodies[bd[i]].shift_consistent;
+    double div = 0, diff = 0, ale_rate = 0;
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       const Vec<D>& r = pl.r[k];
@@ -214,9 +221,11 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
         // psi_ji . grad_i W_ij with psi_ji = 2 (rho_j - rho_i) r_ji / r^2 - (<grad rho>_i +
         // <grad rho>_j): zero for a linear density field (Antuono et al. 2012).
         diff += vj * f * (-2.0 * (rho[j] - rho[i]) - (grad[i] + grad[j]).dot(r));
+      // Sun et al. 2019: the particle moves at v + du (shifting_terms.hpp).
+      if (ale) ale_rate += ale_continuity_pair<D>(rho[i], rho[j], du[i], du[j], f * r, vj);
     }
     // Sun et al. 2017, Eq. 3: continuity with the delta-SPH diffusive term.
-    drho[i] = -rho[i] * div + delta * h * c0_[mt[i]] * diff;
+    drho[i] = -rho[i] * div + delta * h * c0_[mt[i]] * diff + ale_rate;
   }
   sim.exchange({p.find("density_rate")});
 }
@@ -238,10 +247,8 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
   auto bd = p.body();
   auto pw = p.template view<double>(kpw_);
   auto vw = p.template view<Vec<D>>(kvw_);
-  auto lam = p.template view<double>(klam_);
-  auto shift = p.template view<Vec<D>>(kshift_);
   auto ff = p.template view<Vec<D>>(kff_);
-  const double h = W.h(), eta2 = 0.01 * h * h, wdp = W.w(sim.dp());
+  const double h = W.h(), eta2 = 0.01 * h * h;
   const std::size_t n = p.size();
   // Physical viscosity: Morris et al. 1997, a_i = 2 nu (rho0/rho_i) sum_j V_j F_ij v_ij (with
   // r^2/(r^2 + 0.01 h^2)); artificial: delta-SPH alpha h c0 (rho0/rho_i) sum_j pi_ij grad W V_j.
@@ -261,14 +268,14 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
     if (vr < 0) al -= be * vr * q;
     return Vec<D>(vol_j * f * (nu * r2 * q * vij + (al * vr * q) * r));
   };
+  if (any_shift_) shift_velocities(sim);  // before the pair loop: the ALE terms read du_j
+  auto du = p.template view<Vec<D>>(kshift_);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
       const BodyInfo& b = bodies[bd[i]];
       const double nui = nu_of(i), ali = alpha_of(i);
-      Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), sh = Vec<D>::Zero(),
-             gl = Vec<D>::Zero();  // gl: sum V_j grad W
-      bool near_surface = lam[i] <= 0.75;
+      Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), ale = Vec<D>::Zero();
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         const Vec<D>& r = pl.r[k];
@@ -287,27 +294,10 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
           const double be = fj ? 0.5 * (beta_of(i) + beta_of(j)) : beta_of(i);
           av += viscous(nu, al, be, vj, pl.f[k], r, v[i] - vjv);
         }
-        if (b.shift_speed > 0) {
-          const double q = pl.w[k] / wdp, q2 = q * q;  // (W/W(dp))^n; n = 4 without pow
-          sh += (1.0 + b.shift_R * (b.shift_n == 4 ? q2 * q2 : std::pow(q, b.shift_n))) * vj * gw;
-          gl += vj * gw;  // towards the filled side (fluid and walls): minus the surface normal
-          near_surface = near_surface || (fj && lam[j] < 0.4);
-        }
+        // Sun et al. 2019: (du . grad) v of a particle moving at v + du (shifting_terms.hpp).
+        if (b.shift_consistent) ale += ale_momentum_pair<D>(v[i], v[j], du[i], du[j], gw, vj);
       }
-      a[i] += ap / rho[i] + (rho0_[mt[i]] / rho[i]) * av;
-      // delta-plus shifting (Sun et al. 2017, Eq. 7-9): dr = -CFL Ma (2h)^2 sum[..] grad W V_j with
-      // CFL = c0 dt / h and Ma = U / c0, i.e. dr = -4 h U dt sum[..]; stored per unit dt.
-      Vec<D> s = Vec<D>::Zero();
-      if (b.shift_speed > 0 && lam[i] >= 0.4) {
-        s = -4.0 * h * b.shift_speed * sh;
-        // Near the surface (lambda <= 0.75, or a neighbour of a surface particle): tangential part
-        // only, so that no particle is pushed through the surface (or up a wall).
-        if (near_surface && gl.squaredNorm() > 0) {
-          const Vec<D> nn = gl.normalized();
-          s -= s.dot(nn) * nn;
-        }
-      }
-      shift[i] = s;
+      a[i] += ap / rho[i] + (rho0_[mt[i]] / rho[i]) * av + ale;
     } else {
       // The reaction of every fluid-pair force above (exactly opposite): force on particle i.
       Vec<D> f = Vec<D>::Zero();
@@ -335,7 +325,59 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         a[i] += f / m[i];
     }
   }
-  sim.exchange({kshift_});  // ghosts shift in drift as their owners do
+}
+
+template <int D>
+void FluidModule<D>::shift_velocities(Simulation<D>& sim) {
+  auto& p = sim.particles();
+  const auto& pl = sim.pairs();
+  const auto& vol = sim.volumes();
+  const auto& bodies = sim.bodies();
+  auto ph = p.phase();
+  auto rho = p.rho();
+  auto bd = p.body();
+  auto lam = p.template view<double>(klam_);
+  auto shift = p.template view<Vec<D>>(kshift_);
+  const double h = sim.kernel().h(), wdp = sim.kernel().w(sim.dp()), dt = sim.dt();
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(runtime)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ph[i] != kFluid) continue;
+    const BodyInfo& b = bodies[bd[i]];
+    Vec<D> sh = Vec<D>::Zero(), gl = Vec<D>::Zero(), tv = Vec<D>::Zero();  // gl: sum V_j grad W
+    bool near_surface = lam[i] <= 0.75;
+    const bool on = b.shift_speed > 0 || b.shift_pb > 0;
+    for (std::size_t k = pl.begin(i); on && k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      const Vec<D> gw = pl.f[k] * pl.r[k];  // grad_i W_ij
+      const double vj = vol[j];
+      if (b.shift_speed > 0) {
+        const double q = pl.w[k] / wdp, q2 = q * q;  // (W/W(dp))^n; n = 4 without pow
+        sh += (1.0 + b.shift_R * (b.shift_n == 4 ? q2 * q2 : std::pow(q, b.shift_n))) * vj * gw;
+      }
+      tv += transport_pair<D>(vol[i], vj, gw);
+      gl += vj * gw;  // towards the filled side (fluid and walls): minus the surface normal
+      near_surface = near_surface || (ph[j] == kFluid && lam[j] < 0.4);
+    }
+    // delta-plus shifting (Sun et al. 2017, Eq. 7-9): dr = -CFL Ma (2h)^2 sum[..] grad W V_j with
+    // CFL = c0 dt / h and Ma = U / c0, i.e. dr = -4 h U dt sum[..]; stored per unit dt.
+    // Transport velocity (Adami, Hu & Adams 2013, the background-pressure term of the transport
+    // velocity, applied over their half-step kick): du_i = -(dt/2) (p_b / m_i) sum_j (V_i^2 +
+    // V_j^2) grad W_ij, m_i = rho_i V_i; dt is the last step (0 before the first).
+    Vec<D> s = Vec<D>::Zero();
+    if (on && lam[i] >= 0.4) {
+      s = b.shift_speed > 0 ? Vec<D>(-4.0 * h * b.shift_speed * sh)
+                            : Vec<D>((-0.5 * dt * b.shift_pb / (rho[i] * vol[i])) * tv);
+      // Near the surface (lambda <= 0.75, or a neighbour of a surface particle): tangential part
+      // only, so that no particle is pushed through the surface (or up a wall).
+      if (near_surface && gl.squaredNorm() > 0) {
+        const Vec<D> nn = gl.normalized();
+        s -= s.dot(nn) * nn;
+      }
+    }
+    shift[i] = s;
+  }
+  sim.exchange({kshift_});  // ghosts shift in drift as their owners do; ALE terms read du_j
 }
 
 template <int D>

@@ -34,6 +34,8 @@ class FluidModule : public Module<D> {
 
  private:
   void check_no_free_surface(Simulation<D>& sim);  // background pressure: none allowed
+  void shift_velocities(Simulation<D>& sim);       // delta-plus or transport-velocity shift
+  bool any_shift_ = false, any_consistent_ = false;
   int kpw_, kvw_, kgrad_, klam_, kshift_, kff_, kaw_ = -1, kvprev_ = -1;
   std::vector<double> c0_, rho0_, nu_;  // per material
   std::vector<Vec<D>> gb_;              // body force per body

@@ -11,8 +11,10 @@ figure is drawn by gnuplot, couette.gp).
   python3 couette.py series FILE.csv NAME...     omega and min distance against shear time
 
 Keys (defaults in DEFAULTS): kind (cylinder | plane), a_dp (radius in dp), height, period (in
-radii), shear_times, pb (background pressure, Pa), shift (shifting speed, m/s; 0 off), kernel,
-h, delta, form (viscous form), nu (kinematic viscosity), c0, jitter, start (shear | rest).
+radii), shear_times, pb (background pressure, Pa), shift (delta-plus shifting speed, m/s; 0 off),
+tvf (transport-velocity shifting pressure, Pa; 0 off), consistent (1: Sun et al. 2019 ALE terms
+with the shift), fill (lattice | shells: the cylinder's particles), kernel, h, delta, form (viscous form), nu (kinematic viscosity), c0, jitter,
+start (shear | rest).
 """
 import base64
 import csv
@@ -30,7 +32,7 @@ EXE = os.environ.get("MONOSPH", os.path.join(ROOT, "build", "release", "monosph"
 OUT = os.environ.get("COUETTE_OUT", os.path.join(ROOT, "out", "couette"))
 
 DEFAULTS = dict(kind="cylinder", a_dp=4, height=8, period=16, shear_times=20.0, gamma=5.0,
-                radius=2e-3, pb=0.0, shift=0.0, kernel="cubic_spline", h=1.3, delta=0.1,
+                radius=2e-3, pb=0.0, shift=0.0, tvf=0.0, consistent=0, fill="lattice", kernel="cubic_spline", h=1.3, delta=0.1,
                 form="auto", nu=1e-3, c0=1.0, rho=1000.0, jitter=0.0, start="shear", layers=4,
                 frames=20, probes_per_shear=20)
 
@@ -48,8 +50,11 @@ def scene(o):
     fluid_mat += "}"
     vel = f'["{g}*(y - {H / 2})", "0"]' if o["start"] == "shear" else '["0", "0"]'
     extra = ""
+    cons = ", consistent: true" if o["consistent"] else ""
     if o["shift"] > 0:
-        extra += f"\n    shifting: {{speed: {o['shift']}}}"
+        extra += f"\n    shifting: {{speed: {o['shift']}{cons}}}"
+    elif o["tvf"] > 0:
+        extra += f"\n    shifting: {{form: transport_velocity, pressure: {o['tvf']}{cons}}}"
     if o["form"] != "auto":
         extra += f"\n    viscous_form: {o['form']}"
     if o["jitter"] > 0:
@@ -62,6 +67,8 @@ def scene(o):
     phase: rigid
     material: neutral
     shape: {{circle: {{center: [{L / 2}, {H / 2}], radius: {a}}}}}"""
+        if o["fill"] == "shells":
+            cyl += "\n    fill: shells"
         probes = """
     - {name: omega, type: rigid_angular_velocity, body: cylinder}
     - {name: centre, type: rigid_centre, body: cylinder}"""
@@ -259,7 +266,8 @@ def run(name, o):
 
 def table(names, out_csv):
     """study.csv: one row per run (options that differ from DEFAULTS, measured figures)."""
-    keys = ["kind", "a_dp", "height", "period", "kernel", "h", "pb", "shift", "nu", "c0"]
+    keys = ["kind", "a_dp", "height", "period", "kernel", "h", "pb", "shift", "tvf", "consistent",
+            "nu", "c0"]
     figs = ["g_end", "min_distance", "nn_min_end", "nn_sd_end", "nn_sd_max", "omega_mean",
             "omega_sd", "omega_min", "omega_max", "drift_max", "wall", "exit"]
     with open(out_csv, "w", encoding="utf-8") as f:
