@@ -24,11 +24,16 @@ void assemble_modules(Simulation<D>& sim) {
   // carries none of their fields.
   const bool any_solid = std::any_of(sim.bodies().begin(), sim.bodies().end(),
                                      [](const BodyInfo& b) { return b.phase == kSolid; });
+  const bool any_rigid = std::any_of(sim.bodies().begin(), sim.bodies().end(),
+                                     [](const BodyInfo& b) { return b.phase == kRigid; });
+  // Multi-rate stepping sub-steps the solids (fast modules) inside the steps of the rest.
+  if (sim.scene().multi_rate && !(any_solid && (enabled("fluid") || any_rigid)))
+    throw InputError(
+        "time_step.multi_rate: needs solid bodies beside a fluid or rigid grains (the solids "
+        "are sub-stepped inside the steps of the rest)");
   if (any_solid || !enabled("fluid")) {
     auto sph = std::make_unique<SphEquations<D>>(sim, enabled("solid"));
     // Rigid-cluster particles move with their cluster: no SPH equations for them.
-    const bool any_rigid = std::any_of(sim.bodies().begin(), sim.bodies().end(),
-                                       [](const BodyInfo& b) { return b.phase == kRigid; });
     sph->set_solids_only(enabled("fluid") || any_rigid);
     sim.add_module(std::move(sph));
   }

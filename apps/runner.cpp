@@ -161,6 +161,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     next_output = get("next_output", 0);
     next_probe = get("next_probe", 0);
     next_ckpt = get("next_checkpoint", scene.checkpoint_every);
+    sim.set_substeps(static_cast<int>(get("substeps", 1)));
     for (const auto& m : sim.modules()) m->load_state(sim, restart_meta->scalars);
     sim.init(true);
   } else {
@@ -234,6 +235,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     meta.scalars["next_checkpoint"] = next_ckpt;
     meta.scalars["reference_end_time"] = scene.reference_end_time;
     meta.scalars["probe_rows"] = static_cast<double>(csv.rows());
+    meta.scalars["substeps"] = sim.substeps();
     probes.save_state(meta.scalars);
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
     write_checkpoint<D>(file, p, sim.owned(), meta, comm);
@@ -378,6 +380,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   js["neighbour_seconds"] = res.neighbour_seconds;
   js["pass_seconds"] = sim.pass_seconds();  // this rank's (rank 0 under MPI)
   js["last_dt"] = sim.dt();
+  if (scene.multi_rate) js["solid_substeps"] = sim.total_substeps();  // over this run's steps
   js["peak_memory_bytes"] = peak_memory;
   js["output"] = (out / (scene.name + ".pvd")).string();
   js["metrics"] = nlohmann::json::object();

@@ -255,6 +255,9 @@ struct Scene {
   // Explicit Newmark (beta = 0): v_{n+1} = v_n + dt((1 - gamma) a_n + gamma a_{n+1}). 0.5 is
   // velocity Verlet (no numerical dissipation); gamma > 0.5 damps modes near the step frequency.
   double newmark_gamma = 0.5;
+  // Multi-rate stepping (docs/theory.md): solids take up to max_substeps sub-steps per step.
+  bool multi_rate = false;
+  int max_substeps = 32;
   // Dual-criteria time stepping (Zhang et al. 2024, Eq. 21-25): the particle configuration
   // (pair geometry and kernel sums) is updated every advection step CFL_ad h / |v|max; the
   // acoustic steps in between use CFL_ac h / (c + |v|max). Off when advection_cfl is 0.

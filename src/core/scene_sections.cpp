@@ -31,6 +31,12 @@ void read_time_step(MapReader& r, Scene& s) {
     scene_error("time_step.collapse_ratio",
                 fmt::format("must lie in (0, 1), got {:g}", s.dt_collapse));
   s.newmark_gamma = t.number("newmark_gamma", 0.5);
+  s.multi_rate = t.boolean("multi_rate", false);
+  const double ms = t.positive("max_substeps", 32);
+  if (ms != std::floor(ms) || ms > 1000)
+    scene_error("time_step.max_substeps",
+                fmt::format("must be a whole number in [1, 1000], got {:g}", ms));
+  s.max_substeps = static_cast<int>(ms);
   if (t.has("dual_criteria")) {
     MapReader dc(t.node("dual_criteria"), "time_step.dual_criteria");
     // Zhang et al. 2024, Eq. 21; 0 switches dual-criteria stepping off (a study can vary it).
@@ -47,6 +53,10 @@ void read_time_step(MapReader& r, Scene& s) {
   }
   if (s.newmark_gamma < 0.5 || s.newmark_gamma > 1.0)
     scene_error("time_step.newmark_gamma", "must lie in [0.5, 1] (0.5: velocity Verlet)");
+  if (s.multi_rate && s.newmark_gamma != 0.5)
+    scene_error("time_step.multi_rate", "works with newmark_gamma 0.5 (velocity Verlet) only");
+  if (s.multi_rate && s.advection_cfl > 0)
+    scene_error("time_step.multi_rate", "cannot be combined with dual_criteria");
   t.finish();
 }
 

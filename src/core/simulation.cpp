@@ -25,6 +25,7 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   if (scene_.has_mirror()) {
     if (comm_.parallel())
       throw InputError("domain.mirror: not supported on more than one MPI rank");
+    if (scene_.multi_rate) throw InputError("time_step.multi_rate: not with domain.mirror");
     const double halo = kernel_.radius() + scene_.skin_factor * scene_.h();
     mirror_ = std::make_unique<Mirror<D>>(dom, scene_.mirror_min, scene_.mirror_max, halo);
     dom = mirror_->extended(dom);  // the images lie beyond the planes
@@ -73,6 +74,12 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   for (const auto& b : bodies_) mixed = mixed || b.phase != bodies_.front().phase;
   omp_set_schedule(omp_sched_static, mixed ? 64 : 0);
   if (scene_.newmark_gamma != 0.5) kaprev_ = p_.add_field("previous_acceleration", D);
+  if (scene_.multi_rate) {  // multi_rate.cpp
+    kas_ = p_.add_field("slow_acceleration", D);
+    kaf_ = p_.add_field("fast_acceleration", D);
+    kvb_ = p_.add_field("mean_velocity", D);
+    kab_ = p_.add_field("mean_fast_acceleration", D);
+  }
   for (int a = 0; a < D; ++a) g_[a] = scene_.body_force[a];
   for (const auto& b : bodies_) gb_.push_back(Eigen::Map<const V>(b.body_force.data()));
   for (const auto& b : bodies_) damping_.push_back(b.damping), damped_ = damped_ || b.damping > 0;
@@ -292,8 +299,9 @@ void Simulation<D>::refresh_pair_vectors() {
 }
 
 template <int D>
-void Simulation<D>::update_pair_cache() {
+void Simulation<D>::update_pair_cache(bool solid_rows_only) {
   auto x = p_.x();
+  auto ph = p_.phase();
   auto bd = p_.body();
   auto m = p_.m();
   auto rho = p_.rho();
@@ -330,8 +338,9 @@ void Simulation<D>::update_pair_cache() {
   std::size_t* __restrict slot = pair_slot_.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    group_[i] = bodies_[bd[i]].group;
+    group_[i] = bodies_[bd[i]].group;  // of every row: a rebuild may have reordered
     vol_[i] = m[i] / rho[i];
+    if (solid_rows_only && ph[i] != kSolid) continue;  // a multi-rate sub-step
     double best = std::numeric_limits<double>::infinity();
     int jb = -1;
     const std::size_t k0 = nb.begin(i), k1 = nb.end(i);
@@ -386,35 +395,46 @@ void Simulation<D>::compute_forces(bool configuration) {
   }
   for (auto& m : modules_) m->constitutive(*this);
   clock.lap("constitutive");
-  auto a = p_.a();
-  auto bd = p_.body();
-  const std::size_t n = p_.size();
+  body_acceleration();
+  for (auto& m : modules_) m->forces(*this);
+  exchange({p_.find("acceleration")});  // ghosts then kick and drift as their owners do
+  clock.lap("forces");
+  compute_reactions();
+}
+
+template <int D>
+void Simulation<D>::body_acceleration() {
   // Body force, and mass-proportional damping a -= c v on the particles without a prescribed
   // path (one pass; c = 0 for undamped bodies).
+  auto a = p_.a();
+  auto bd = p_.body();
   auto v = p_.v();
+  const std::size_t n = p_.size();
   const std::int64_t* bc = kbc_ >= 0 ? p_.template view<std::int64_t>(kbc_).data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     a[i] = gb_[bd[i]];
     if (damped_ && (!bc || !bc[i])) a[i] -= damping_[bd[i]] * v[i];
   }
-  for (auto& m : modules_) m->forces(*this);
-  exchange({p_.find("acceleration")});  // ghosts then kick and drift as their owners do
-  clock.lap("forces");
-  if (kbc_ >= 0) {  // reaction of each constrained set: what holds it on its prescribed path
-    auto bc = p_.template view<std::int64_t>(kbc_);
-    auto mass = p_.m();
-    for (auto& r : reactions_) r.setZero();
-    const std::size_t own = owned();
-    for (std::size_t i = 0; i < own; ++i)
-      if (bc[i]) {
-        const auto& ex = bc_velocity_[bc[i] - 1];
-        for (int c = 0; c < D; ++c)  // a free component has no reaction
-          if (ex.empty() || !ex[c].empty()) reactions_[bc[i] - 1][c] -= mass[i] * a[i][c];
-      }
-    if (dec_)
-      for (auto& r : reactions_) comm_.sum(std::span<double>(r.data(), D));
-  }
+}
+
+template <int D>
+void Simulation<D>::compute_reactions() {
+  // Reaction of each constrained set: what holds it on its prescribed path.
+  if (kbc_ < 0) return;
+  auto a = p_.a();
+  auto bc = p_.template view<std::int64_t>(kbc_);
+  auto mass = p_.m();
+  for (auto& r : reactions_) r.setZero();
+  const std::size_t own = owned();
+  for (std::size_t i = 0; i < own; ++i)
+    if (bc[i]) {
+      const auto& ex = bc_velocity_[bc[i] - 1];
+      for (int c = 0; c < D; ++c)  // a free component has no reaction
+        if (ex.empty() || !ex[c].empty()) reactions_[bc[i] - 1][c] -= mass[i] * a[i][c];
+    }
+  if (dec_)
+    for (auto& r : reactions_) comm_.sum(std::span<double>(r.data(), D));
 }
 
 template <int D>
@@ -458,7 +478,7 @@ void Simulation<D>::init(bool restarted) {
     rebuild_requested_ = true;
     update_neighbours();
     update_pair_cache();
-    if (dt_ <= 0) dt_ = compute_dt();
+    if (dt_ <= 0) dt_ = scene_.multi_rate ? compute_dt_multi_rate() : compute_dt();
     dt0_ = dt_;
     keep_acceleration();
     return;
@@ -466,6 +486,7 @@ void Simulation<D>::init(bool restarted) {
   rebuild_requested_ = true;
   update_neighbours();
   apply_bc_velocity(t_);
+  if (scene_.multi_rate) return init_multi_rate();
   compute_forces();
   keep_acceleration();
   check_guards();
@@ -475,6 +496,7 @@ void Simulation<D>::init(bool restarted) {
 
 template <int D>
 void Simulation<D>::advance(double stop) {
+  if (scene_.multi_rate) return advance_multi_rate(stop);
   // Approach `stop` in at most two equal steps so that no sliver of a step is left.
   const double rest = stop - t_;
   const double dt = rest <= dt_ ? rest : rest < 2 * dt_ ? 0.5 * rest : dt_;

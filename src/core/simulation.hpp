@@ -51,6 +51,10 @@ class Module {
   virtual void save_state(std::map<std::string, double>&) const {}
   virtual void load_state(Simulation<D>&, const std::map<std::string, double>&) {}
   virtual double max_dt(Simulation<D>&) { return std::numeric_limits<double>::infinity(); }
+  // Multi-rate stepping (time_step.multi_rate, docs/theory.md): a fast module's passes and
+  // max_dt concern only solid particles, which it integrates with sub-steps; its forces are
+  // internal to solid bodies. Slow modules run once per (outer) step.
+  virtual bool fast() const { return false; }
   // Probe types a module provides (e.g. "surface_force"): the column suffixes of `spec` ("_x",
   // "_y"... or ""), empty when the type is not this module's; `probe` appends one value per column.
   virtual std::vector<std::string> probe_columns(const ProbeSpec&) const { return {}; }
@@ -135,7 +139,7 @@ class Simulation {
   void advance(double stop = std::numeric_limits<double>::infinity());
   // Recomputes the pair list (PairList) and the volumes at the current state: needed after moving
   // particles or changing densities by hand (tests); a step does it itself.
-  void update_pair_cache();
+  void update_pair_cache() { update_pair_cache(false); }
   // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
   void rebuild_neighbours();
   // Diagnostic fields (e.g. the disorder measure) before output or probes.
@@ -182,6 +186,10 @@ class Simulation {
   // Seconds spent in each pass of the steps so far: integration (kicks, drift), rates,
   // neighbours (rebuilds, MPI migration), pair_cache, sums, constitutive, forces, guards_and_dt.
   const std::map<std::string, double>& pass_seconds() const { return pass_seconds_; }
+  // Multi-rate stepping: sub-steps of the solids in the last step (1 when single-rate).
+  int substeps() const { return kappa_; }
+  void set_substeps(int k) { kappa_ = k; }  // restart
+  long total_substeps() const { return total_substeps_; }
   // "particle id 12 (body 'water') at (x, y)".
   std::string describe(std::size_t i);
 
@@ -216,7 +224,18 @@ class Simulation {
   void keep_acceleration();      // a_n for the first Newmark step
 
   void drift(double dt);
-  bool update_neighbours();  // true when the lists were rebuilt
+  // Multi-rate stepping (multi_rate.cpp).
+  void init_multi_rate();
+  void advance_multi_rate(double stop);
+  void substep(double ds, double dt, bool last);
+  void fast_forces(double weight);
+  void slow_forces();
+  void slow_rates(double dt);
+  double compute_dt_multi_rate();
+  void compute_reactions();
+  void body_acceleration();                      // a = body force - damping
+  bool update_neighbours();                      // true when the lists were rebuilt
+  void update_pair_cache(bool solid_rows_only);  // multi-rate sub-steps: rows of solids only
   // configuration: recompute the pair geometry and the kernel sums (always, unless dual-criteria
   // time stepping keeps them for the acoustic steps of an advection step).
   void compute_forces(bool configuration = true);
@@ -257,6 +276,10 @@ class Simulation {
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;
   bool rebuild_requested_ = false;
+  // Multi-rate: fields a_slow (all), a_fast and the mean velocity and acceleration over the
+  // step (solids); sub-steps per step.
+  int kas_ = -1, kaf_ = -1, kvb_ = -1, kab_ = -1, kappa_ = 1;
+  long total_substeps_ = 0;
   std::map<std::string, double> pass_seconds_;
 };
 

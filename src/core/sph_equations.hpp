@@ -14,6 +14,7 @@ class SphEquations : public Module<D> {
   // store_velocity_gradient: keep grad v as a field (solid modules read it).
   explicit SphEquations(Simulation<D>& sim, bool store_velocity_gradient = false);
   std::string name() const override { return "sph"; }
+  bool fast() const override { return solids_only_; }
   void sums(Simulation<D>& sim) override;
   void rates(Simulation<D>& sim) override;
   void constitutive(Simulation<D>& sim) override;

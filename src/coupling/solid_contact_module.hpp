@@ -26,6 +26,7 @@ class SolidContactModule : public Module<D> {
  public:
   explicit SolidContactModule(Simulation<D>& sim);
   std::string name() const override { return "solid_contact"; }
+  bool fast() const override { return true; }  // solids only
   void forces(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
   double potential_energy(Simulation<D>& sim) override;

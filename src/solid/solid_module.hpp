@@ -17,6 +17,7 @@ class SolidModule : public Module<D> {
  public:
   explicit SolidModule(Simulation<D>& sim);
   std::string name() const override { return "solid"; }
+  bool fast() const override { return true; }  // solids only
   void on_create(Simulation<D>& sim) override;
   void drift(Simulation<D>& sim, double dt) override;
   void constitutive(Simulation<D>& sim) override;
