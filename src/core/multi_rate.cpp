@@ -122,6 +122,27 @@ void Simulation<D>::slow_rates(double dt) {
     if (ph[i] == kSolid) v[i] = vb[i], vb[i].setZero();  // vb now sums the mean velocity
 }
 
+// x, rho += dt (v, drho) of the solid particles (`solids`, adding (weight) v to the mean
+// velocity) or of all others (then the mean fast acceleration of the solids starts anew).
+template <int D>
+void Simulation<D>::drift_positions(double dt, bool solids, double weight) {
+  auto x = p_.x();
+  auto v = p_.v();
+  auto rho = p_.rho();
+  auto drho = p_.drho();
+  auto vb = p_.template view<V>(kvb_);
+  auto ab = p_.template view<V>(kab_);
+  auto ph = p_.phase();
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool solid = ph[i] == kSolid;
+    if (solid == solids) x[i] += dt * v[i], rho[i] += dt * drho[i];
+    if (solid && solids) vb[i] += weight * v[i];
+    if (solid && !solids) ab[i].setZero();
+  }
+}
+
 // Sub-step of length ds of the solids inside a step dt; the last one also evaluates the slow
 // forces (all particles are then at step n+1).
 template <int D>
@@ -142,19 +163,7 @@ void Simulation<D>::substep(double ds, double dt, bool last) {
   for (auto& m : modules_)
     if (m->fast()) m->rates(*this);
   clock.lap("rates");
-  {
-    auto x = p_.x();
-    auto v = p_.v();
-    auto rho = p_.rho();
-    auto drho = p_.drho();
-    auto vb = p_.template view<V>(kvb_);
-    auto ph = p_.phase();
-    const std::size_t n = p_.size();
-    const double w = ds / dt;
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i)
-      if (ph[i] == kSolid) x[i] += ds * v[i], rho[i] += ds * drho[i], vb[i] += w * v[i];
-  }
+  drift_positions(ds, true, ds / dt);
   for (auto& m : modules_)
     if (m->fast()) m->drift(*this, ds);
   t_ += ds;
@@ -192,21 +201,7 @@ void Simulation<D>::advance_multi_rate(double stop) {
   clock.lap("integration");
   slow_rates(dt);
   clock.lap("rates");
-  {
-    auto x = p_.x();
-    auto v = p_.v();
-    auto rho = p_.rho();
-    auto drho = p_.drho();
-    auto ab = p_.template view<V>(kab_);
-    auto ph = p_.phase();
-    const std::size_t n = p_.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i)
-      if (ph[i] != kSolid)
-        x[i] += dt * v[i], rho[i] += dt * drho[i];
-      else
-        ab[i].setZero();
-  }
+  drift_positions(dt, false, 0.0);
   for (auto& m : modules_)
     if (!m->fast()) m->drift(*this, dt);
   clock.lap("integration");
@@ -233,11 +228,7 @@ void Simulation<D>::advance_multi_rate(double stop) {
   check_guards();
   dt_ = compute_dt_multi_rate();
   clock.lap("guards_and_dt");
-  if (dt_ < scene_.dt_collapse * dt0_) {
-    std::ostringstream os;
-    os << "time step collapsed to " << dt_ << " s (initial " << dt0_ << " s) at t = " << t_;
-    throw RunAborted(os.str());
-  }
+  check_dt_collapse();
 }
 
 // The step of the slow forces and the sub-step of the fast ones: the acoustic and force limits

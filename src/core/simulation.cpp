@@ -529,11 +529,15 @@ void Simulation<D>::advance(double stop) {
   check_guards();
   dt_ = compute_dt();
   clock.lap("guards_and_dt");
-  if (dt_ < scene_.dt_collapse * dt0_) {
-    std::ostringstream os;
-    os << "time step collapsed to " << dt_ << " s (initial " << dt0_ << " s) at t = " << t_;
-    throw RunAborted(os.str());
-  }
+  check_dt_collapse();
+}
+
+template <int D>
+void Simulation<D>::check_dt_collapse() const {
+  if (dt_ >= scene_.dt_collapse * dt0_) return;
+  std::ostringstream os;
+  os << "time step collapsed to " << dt_ << " s (initial " << dt0_ << " s) at t = " << t_;
+  throw RunAborted(os.str());
 }
 
 template <int D>

@@ -228,11 +228,13 @@ class Simulation {
   void init_multi_rate();
   void advance_multi_rate(double stop);
   void substep(double ds, double dt, bool last);
+  void drift_positions(double dt, bool solids, double weight);
   void fast_forces(double weight);
   void slow_forces();
   void slow_rates(double dt);
   double compute_dt_multi_rate();
   void compute_reactions();
+  void check_dt_collapse() const;                // throws RunAborted
   void body_acceleration();                      // a = body force - damping
   bool update_neighbours();                      // true when the lists were rebuilt
   void update_pair_cache(bool solid_rows_only);  // multi-rate sub-steps: rows of solids only
