@@ -24,50 +24,55 @@ void Simulation<D>::init_multi_rate() {
   auto vb = p_.template view<V>(kvb_);
   std::copy(v.begin(), v.end(), vb.begin());  // the slow passes see v itself
   slow_forces();
-  auto a = p_.a();
-  auto as = p_.template view<V>(kas_);
-  auto af = p_.template view<V>(kaf_);
-  auto ph = p_.phase();
-  for (std::size_t i = 0; i < p_.size(); ++i) a[i] = as[i] + (ph[i] == kSolid ? af[i] : V::Zero());
+  add_fast_acceleration();
   compute_reactions();
   check_guards();
   dt_ = compute_dt_multi_rate();
   dt0_ = dt_;
 }
 
+// The sums, constitutive and force passes of the fast (or slow) modules; `reset` sets the
+// accelerations they add to.
+template <int D>
+template <class Reset>
+void Simulation<D>::module_forces(bool fast, Reset reset) {
+  PassClock clock(pass_seconds_);
+  for (auto& m : modules_)
+    if (m->fast() == fast) m->sums(*this);
+  clock.lap("sums");
+  for (auto& m : modules_)
+    if (m->fast() == fast) m->constitutive(*this);
+  clock.lap("constitutive");
+  reset();
+  for (auto& m : modules_)
+    if (m->fast() == fast) m->forces(*this);
+  exchange({p_.find("acceleration")});
+  clock.lap("forces");
+}
+
 // Fast passes at the current positions: a_fast of the solids (no body force: that is slow).
 // The mean of a_fast over the step accumulates with `weight` (1/kappa).
 template <int D>
 void Simulation<D>::fast_forces(double weight) {
-  PassClock clock(pass_seconds_);
-  for (auto& m : modules_)
-    if (m->fast()) m->sums(*this);
-  clock.lap("sums");
-  for (auto& m : modules_)
-    if (m->fast()) m->constitutive(*this);
-  clock.lap("constitutive");
   auto a = p_.a();
   auto af = p_.template view<V>(kaf_);
   auto ab = p_.template view<V>(kab_);
   auto ph = p_.phase();
   const std::size_t n = p_.size();
+  module_forces(true, [&] {
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i)
-    if (ph[i] == kSolid) a[i].setZero();
-  for (auto& m : modules_)
-    if (m->fast()) m->forces(*this);
-  exchange({p_.find("acceleration")});
+    for (std::size_t i = 0; i < n; ++i)
+      if (ph[i] == kSolid) a[i].setZero();
+  });
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
     if (ph[i] == kSolid) af[i] = a[i], ab[i] += weight * a[i];
-  clock.lap("forces");
 }
 
 // Slow passes at step n+1 (full pair cache): a_slow of every particle. Solids show their mean
 // velocity over the step (x_{n+1} - x_n)/dt and their mean acceleration a_slow,n + <a_fast>.
 template <int D>
 void Simulation<D>::slow_forces() {
-  PassClock clock(pass_seconds_);
   auto ph = p_.phase();
   const std::size_t n = p_.size();
   auto swap_in = [&] {
@@ -86,21 +91,11 @@ void Simulation<D>::slow_forces() {
     for (std::size_t i = 0; i < n; ++i)
       if (ph[i] == kSolid) a[i] = as[i] + ab[i];  // the wall acceleration of Adami's pressure
   }
-  for (auto& m : modules_)
-    if (!m->fast()) m->sums(*this);
-  clock.lap("sums");
-  for (auto& m : modules_)
-    if (!m->fast()) m->constitutive(*this);
-  clock.lap("constitutive");
-  body_acceleration();
-  for (auto& m : modules_)
-    if (!m->fast()) m->forces(*this);
-  exchange({p_.find("acceleration")});
+  module_forces(false, [&] { body_acceleration(); });
   auto a = p_.a();
   auto as = p_.template view<V>(kas_);
   std::copy(a.begin(), a.end(), as.begin());
   swap_in();  // back: v is the solids' own velocity again
-  clock.lap("forces");
 }
 
 // The slow modules' rates over the step, with the solids at their predicted half-step velocity
@@ -141,6 +136,18 @@ void Simulation<D>::drift_positions(double dt, bool solids, double weight) {
     if (solid && solids) vb[i] += weight * v[i];
     if (solid && !solids) ab[i].setZero();
   }
+}
+
+// a = a_slow + a_fast on solids (a holds a_slow after the slow passes): output, reactions, dt.
+template <int D>
+void Simulation<D>::add_fast_acceleration() {
+  auto a = p_.a();
+  auto af = p_.template view<V>(kaf_);
+  auto ph = p_.phase();
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (ph[i] == kSolid) a[i] += af[i];
 }
 
 // Sub-step of length ds of the solids inside a step dt; the last one also evaluates the slow
@@ -214,15 +221,7 @@ void Simulation<D>::advance_multi_rate(double stop) {
   total_substeps_ += kappa;
   clock.restart();
   slow_kick(0.5 * dt, t_);
-  {
-    auto a = p_.a();
-    auto af = p_.template view<V>(kaf_);
-    auto ph = p_.phase();
-    const std::size_t n = p_.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i)
-      if (ph[i] == kSolid) a[i] += af[i];  // a = a_slow + a_fast (output, reactions)
-  }
+  add_fast_acceleration();
   compute_reactions();
   clock.lap("integration");
   check_guards();

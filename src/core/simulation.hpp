@@ -229,7 +229,10 @@ class Simulation {
   void advance_multi_rate(double stop);
   void substep(double ds, double dt, bool last);
   void drift_positions(double dt, bool solids, double weight);
+  template <class Reset>
+  void module_forces(bool fast, Reset reset);
   void fast_forces(double weight);
+  void add_fast_acceleration();
   void slow_forces();
   void slow_rates(double dt);
   double compute_dt_multi_rate();
