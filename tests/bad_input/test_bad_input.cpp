@@ -64,8 +64,9 @@ class BadScene : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BadScene, ExitsWithCode2AndNamesTheProblem) {
   const Case& c = GetParam();
+  // A folder per case: ctest runs the cases side by side, and a run locks its folder.
   auto r = run_monosph("run " + source("tests/bad_input/scenes/") + c.file + " --out " +
-                       out_dir("bad") + " --quiet");
+                       out_dir(std::string("bad_") + c.file) + " --quiet");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
   // One line, no stack trace.
