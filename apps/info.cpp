@@ -5,6 +5,7 @@
 #include "assemble.hpp"
 #include "core/memory.hpp"
 #include "core/scene.hpp"
+#include "core/scene_dump.hpp"
 
 namespace monosph {
 
@@ -76,8 +77,12 @@ int info_impl(const Scene& scene) {
 }
 }  // namespace
 
-int print_info(const std::string& path, const std::vector<std::string>& overrides) {
+int print_info(const std::string& path, const std::vector<std::string>& overrides, bool config) {
   Scene scene = load_scene_file(path, overrides);
+  if (config) {
+    fmt::print("{}\n", scene_config(scene).dump(1));
+    return 0;
+  }
   return scene.dimension == 2 ? info_impl<2>(scene) : info_impl<3>(scene);
 }
 

@@ -117,6 +117,9 @@ int run_main(int argc, char** argv) {
   auto* cmd_info = app.add_subcommand("info", "particle counts, modules and memory of a scene");
   cmd_info->add_option("scene", info_scene, "scene file (YAML)")->required();
   cmd_info->add_option("--set", info_set, "override a scene key")->take_all();
+  bool info_config = false;
+  cmd_info->add_flag("--config", info_config,
+                     "print the parsed configuration (every value, defaults included) as JSON");
 
   BenchOptions bench;
   auto* cmd_bench =
@@ -209,7 +212,7 @@ int run_main(int argc, char** argv) {
       if (!run.restart.empty()) check_restart_overrides(run.overrides);
       return run_scene(run).exit_code;
     }
-    if (*cmd_info) return print_info(info_scene, info_set);
+    if (*cmd_info) return print_info(info_scene, info_set, info_config);
     if (*cmd_bench) return bench.suite ? run_bench_suite(bench) : run_bench(bench);
     if (*cmd_study) return run_study(study);
     if (*cmd_stab) return run_stability(stab);

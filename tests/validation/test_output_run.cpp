@@ -164,3 +164,17 @@ TEST(Info, MemoryEstimateMatchesTheRun) {
   const double peak = summary(out)["peak_memory_bytes"].get<double>();
   EXPECT_NEAR(estimate / peak, 1.0, 0.2) << estimate << " vs " << peak;
 }
+
+TEST(Info, ConfigPrintsEveryParsedValueWithOverridesAndDefaults) {
+  // `info --config` is the reference the scene reader is compared against (scripts/dump-configs):
+  // a value from the file, a --set override and a default must all appear as the run uses them.
+  const std::string scene = source("cases/oscillating_plate/scene.yaml");
+  auto r = run_monosph("info " + scene + " --config --set bodies.0.hourglass.xi=0.37");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto js = nlohmann::json::parse(r.output);
+  EXPECT_EQ(js["dimension"], 2);
+  EXPECT_DOUBLE_EQ(js["bodies"][0]["hourglass"]["xi"].get<double>(), 0.37);
+  EXPECT_DOUBLE_EQ(js["skin"].get<double>(), 0.3);  // default of neighbours.skin
+  EXPECT_EQ(js["bodies"][0]["phase"], "solid");
+  EXPECT_GT(js["materials"][0]["bulk_modulus"].get<double>(), 0.0);
+}
