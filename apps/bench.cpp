@@ -8,8 +8,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/scene.hpp"
 #include "runner.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 

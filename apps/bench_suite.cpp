@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bench.hpp"
-#include "core/scene.hpp"
 #include "core/types.hpp"
 #include "runner.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 namespace {

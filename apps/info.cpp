@@ -4,8 +4,8 @@
 
 #include "assemble.hpp"
 #include "core/memory.hpp"
-#include "core/scene.hpp"
-#include "core/scene_dump.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_dump.hpp"
 
 namespace monosph {
 

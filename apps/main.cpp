@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "bench.hpp"
-#include "core/comm.hpp"
-#include "core/threads.hpp"
 #include "core/types.hpp"
-#include "core/vtk_quiet.hpp"
 #include "info.hpp"
+#include "output/vtk_quiet.hpp"
+#include "parallel/comm.hpp"
+#include "parallel/threads.hpp"
 #include "runner.hpp"
 #include "stability.hpp"
 #include "study.hpp"

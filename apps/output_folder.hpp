@@ -6,7 +6,7 @@
 // checkpoint.h5); a restart removes summary.json.
 #include <filesystem>
 
-#include "core/comm.hpp"
+#include "parallel/comm.hpp"
 
 namespace monosph {
 

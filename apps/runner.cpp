@@ -12,19 +12,19 @@
 #include <nlohmann/json.hpp>
 
 #include "assemble.hpp"
-#include "core/atomic_file.hpp"
-#include "core/checkpoint.hpp"
-#include "core/checkpoint_check.hpp"
 #include "core/memory.hpp"
 #include "core/motion_range.hpp"
-#include "core/output_vtk.hpp"
-#include "core/probe_csv.hpp"
-#include "core/probes.hpp"
-#include "core/scene.hpp"
 #include "core/simulation.hpp"
-#include "core/thread_governor.hpp"
-#include "core/threads.hpp"
+#include "output/atomic_file.hpp"
+#include "output/checkpoint.hpp"
+#include "output/checkpoint_check.hpp"
+#include "output/output_vtk.hpp"
+#include "output/probe_csv.hpp"
+#include "output/probes.hpp"
 #include "output_folder.hpp"
+#include "parallel/thread_governor.hpp"
+#include "parallel/threads.hpp"
+#include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
 

@@ -11,11 +11,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/scene.hpp"
-#include "core/scene_reader.hpp"
-#include "core/threads.hpp"
 #include "core/types.hpp"
+#include "parallel/threads.hpp"
 #include "processes.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace monosph {
 namespace fs = std::filesystem;

@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/scene.hpp"
-#include "core/threads.hpp"
 #include "core/types.hpp"
+#include "parallel/threads.hpp"
 #include "processes.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 namespace fs = std::filesystem;

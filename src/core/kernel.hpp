@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "types.hpp"
+#include "core/types.hpp"
 
 namespace monosph {
 

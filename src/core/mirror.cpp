@@ -1,4 +1,4 @@
-#include "mirror.hpp"
+#include "core/mirror.hpp"
 
 #include <cmath>
 #include <limits>

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "neighbours.hpp"
-#include "particles.hpp"
+#include "core/neighbours.hpp"
+#include "core/particles.hpp"
 
 namespace monosph {
 

@@ -1,4 +1,4 @@
-#include "motion_range.hpp"
+#include "core/motion_range.hpp"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 // widened on every side by its largest speed times the time left to end_time.
 #include <string>
 
-#include "simulation.hpp"
+#include "core/simulation.hpp"
 
 namespace monosph {
 

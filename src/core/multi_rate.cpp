@@ -10,7 +10,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "simulation.hpp"
+#include "core/simulation.hpp"
 
 namespace monosph {
 

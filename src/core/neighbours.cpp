@@ -1,4 +1,4 @@
-#include "neighbours.hpp"
+#include "core/neighbours.hpp"
 
 #include <omp.h>
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "particles.hpp"
+#include "core/particles.hpp"
 
 namespace monosph {
 

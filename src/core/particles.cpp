@@ -1,4 +1,4 @@
-#include "particles.hpp"
+#include "core/particles.hpp"
 
 #include <algorithm>
 #include <numeric>

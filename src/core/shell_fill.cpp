@@ -1,9 +1,9 @@
-#include "shell_fill.hpp"
+#include "core/shell_fill.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "types.hpp"
+#include "core/types.hpp"
 
 namespace monosph {
 

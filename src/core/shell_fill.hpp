@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "scene.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 

@@ -1,4 +1,4 @@
-#include "simulation.hpp"
+#include "core/simulation.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "comm.hpp"
-#include "decomposition.hpp"
-#include "expression.hpp"
-#include "kernel.hpp"
-#include "mirror.hpp"
-#include "neighbours.hpp"
-#include "particles.hpp"
-#include "scene.hpp"
+#include "core/kernel.hpp"
+#include "core/mirror.hpp"
+#include "core/neighbours.hpp"
+#include "core/particles.hpp"
+#include "parallel/comm.hpp"
+#include "parallel/decomposition.hpp"
+#include "scene/expression.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "shell_fill.hpp"
-#include "simulation.hpp"
+#include "core/shell_fill.hpp"
+#include "core/simulation.hpp"
 
 namespace monosph {
 

@@ -1,4 +1,4 @@
-#include "sph_equations.hpp"
+#include "core/sph_equations.hpp"
 
 #include <cmath>
 #include <limits>

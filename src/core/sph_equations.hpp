@@ -4,7 +4,7 @@
 // momentum (Eq. 11) with Sigma = -p I + S (Eq. 12), linear EOS (Eq. 13), artificial viscosity
 // (Eq. 17-18). Particles interact here if both are fluid, or both belong to the same solid body
 // (fluids move to the delta-plus FluidModule when a scene has one: set_solids_only).
-#include "simulation.hpp"
+#include "core/simulation.hpp"
 
 namespace monosph {
 

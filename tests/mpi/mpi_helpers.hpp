@@ -7,7 +7,7 @@
 #include <map>
 
 #include "../validation/run_helpers.hpp"
-#include "core/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 
 namespace monosph::test {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph::test {
 

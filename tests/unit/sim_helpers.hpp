@@ -6,7 +6,7 @@
 #include <string>
 
 #include "assemble.hpp"
-#include "core/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph::test {
 

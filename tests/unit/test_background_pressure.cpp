@@ -7,7 +7,7 @@
 #include <map>
 
 #include "assemble.hpp"
-#include "core/scene_reader.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace monosph;
 

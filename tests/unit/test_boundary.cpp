@@ -1,8 +1,8 @@
 // Fixed and prescribed-velocity particle sets, body force and the reaction probe.
 #include <gtest/gtest.h>
 
-#include "core/scene.hpp"
 #include "core/sph_equations.hpp"
+#include "scene/scene.hpp"
 
 using namespace monosph;
 

@@ -9,7 +9,7 @@
 #include <limits>
 #include <random>
 
-#include "core/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 
 namespace monosph {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "assemble.hpp"
 #include "core/hertz.hpp"
-#include "core/probes.hpp"
 #include "coupling/contact_module.hpp"
+#include "output/probes.hpp"
 #include "rigid/rigid_surface_module.hpp"
 #include "sim_helpers.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "core/probes.hpp"
+#include "output/probes.hpp"
 #include "sim_helpers.hpp"
 
 using namespace monosph;

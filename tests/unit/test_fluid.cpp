@@ -6,7 +6,7 @@
 #include <random>
 
 #include "assemble.hpp"
-#include "core/scene_reader.hpp"
+#include "scene/scene_reader.hpp"
 #include "thread_helpers.hpp"
 
 using namespace monosph;

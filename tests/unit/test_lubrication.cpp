@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/probes.hpp"
 #include "coupling/lubrication_module.hpp"
+#include "output/probes.hpp"
 #include "rigid/cluster_module.hpp"
 #include "sim_helpers.hpp"
 

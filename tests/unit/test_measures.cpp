@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/probes.hpp"
-#include "core/scene.hpp"
+#include "output/probes.hpp"
+#include "scene/scene.hpp"
 
 using namespace monosph;
 

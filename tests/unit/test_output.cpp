@@ -16,7 +16,7 @@
 #include <sstream>
 
 #include "../output_files.hpp"
-#include "core/output_vtk.hpp"
+#include "output/output_vtk.hpp"
 
 namespace monosph {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/scene.hpp"
+#include "scene/scene.hpp"
 #include "solid/elasticity.hpp"
 #include "solid/plasticity.hpp"
 

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "assemble.hpp"
-#include "core/probes.hpp"
+#include "output/probes.hpp"
 #include "rigid/cluster_module.hpp"
 #include "sim_helpers.hpp"
 

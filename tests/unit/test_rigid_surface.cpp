@@ -9,10 +9,10 @@
 #include <random>
 
 #include "assemble.hpp"
-#include "core/probes.hpp"
-#include "core/scene.hpp"
+#include "output/probes.hpp"
 #include "rigid/rigid_surface_module.hpp"
 #include "rigid/surface.hpp"
+#include "scene/scene.hpp"
 
 using namespace monosph;
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/scene.hpp"
 #include "core/types.hpp"
+#include "scene/scene.hpp"
 #include "sim_helpers.hpp"
 
 namespace monosph {

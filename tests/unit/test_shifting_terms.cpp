@@ -7,8 +7,8 @@
 
 #include "assemble.hpp"
 #include "core/kernel.hpp"
-#include "core/scene_reader.hpp"
 #include "fluid/shifting_terms.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace monosph;
 

@@ -1,7 +1,7 @@
 // The stabilisation variants of `monosph study` as scene keys of every solid body.
 #include <gtest/gtest.h>
 
-#include "core/scene.hpp"
+#include "scene/scene.hpp"
 #include "study.hpp"
 
 namespace monosph {

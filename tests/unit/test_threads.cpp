@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "../busy_children.hpp"
-#include "core/thread_governor.hpp"
-#include "core/threads.hpp"
+#include "parallel/thread_governor.hpp"
+#include "parallel/threads.hpp"
 
 using namespace monosph;
 using monosph::test::BusyChildren;

@@ -1,4 +1,4 @@
-// The wall-pressure probe (`type: wall_pressure`, src/core/wall_pressure_probe.cpp): sensor
+// The wall-pressure probe (`type: wall_pressure`, src/output/wall_pressure_probe.cpp): sensor
 // points, the hydrostatic pressure on the floor and on a side wall, a dry sensor, and the checks
 // of its keys.
 #include <fmt/format.h>
@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "assemble.hpp"
-#include "core/probes.hpp"
-#include "core/scene_reader.hpp"
-#include "core/wall_pressure_probe.hpp"
+#include "output/probes.hpp"
+#include "output/wall_pressure_probe.hpp"
+#include "scene/scene_reader.hpp"
 #include "sim_helpers.hpp"
 
 using namespace monosph;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 
 namespace monosph::test {
 

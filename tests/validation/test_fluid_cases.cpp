@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include "core/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 #include "run_helpers.hpp"
 
 using namespace monosph::test;

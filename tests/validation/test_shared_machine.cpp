@@ -7,7 +7,7 @@
 
 #include "../busy_children.hpp"
 #include "child_process.hpp"
-#include "core/threads.hpp"
+#include "parallel/threads.hpp"
 #include "run_helpers.hpp"
 
 namespace monosph::test {

@@ -1,0 +1,463 @@
+// The scene sections `bodies` (shape, material, initial state, per-body schemes) and
+// `boundary_conditions`.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "scene/scene_parts.hpp"
+
+namespace monosph {
+
+namespace {
+
+void check_expression(const std::string& text, const std::string& path, const Constants& vars,
+                      const std::string& variables = "xyzt") {
+  Expression e(text, path, vars, variables);
+}
+
+// Built-in initial velocity profiles, written out as expressions.
+// cantilever_mode: fundamental bending mode of a clamped-free beam (MMB Eq. 35-36),
+//   v = v_l f(x)/f(l), f(x) = (cos kl + cosh kl)(cosh kx - cos kx) + (sin kl - sinh kl)(sinh kx -
+//   sin kx), zero for x < clamp.
+// clamped_clamped_mode: first mode of a beam clamped at both ends (Blevins, Formulas for Natural
+//   Frequency and Mode Shape, 1979, Table 8-1: cos kl cosh kl = 1, kl = 4.7300, s = 0.982502),
+//   v = v_l f(x)/f(l/2),
+//   f(x) = (cosh kx - cos kx) - s (sinh kx - sin kx), s = (cosh kl - cos kl)/(sinh kl - sin kl),
+//   zero outside [clamp, clamp + length].
+std::vector<std::string> velocity_profile(MapReader& in, int dim) {
+  MapReader pr(in.node("velocity_profile"), in.at("velocity_profile"));
+  const std::string type = pr.choice("type", {"cantilever_mode", "clamped_clamped_mode"});
+  const bool cc = type == "clamped_clamped_mode";
+  const double vl = pr.number("amplitude");
+  const double x0 = pr.number("clamp");
+  const double len = pr.positive("length");
+  const double kl = pr.positive("kl", cc ? 4.730040745 : 1.875);
+  const std::string axis = pr.choice("direction", {"x", "y", "z"}, "y");
+  const std::string along = pr.choice("along", {"x", "y", "z"}, "x");
+  pr.finish();
+  const int a = axis[0] - 'x';
+  if (a >= dim || along[0] - 'x' >= dim) scene_error(pr.path(), "axis not in this dimension");
+  const double k = kl / len;
+  // f(x) = A (cosh kx - cos kx) + B (sinh kx - sin kx)
+  const double A = cc ? 1.0 : std::cos(kl) + std::cosh(kl);
+  const double B = cc ? -(std::cosh(kl) - std::cos(kl)) / (std::sinh(kl) - std::sin(kl))
+                      : std::sin(kl) - std::sinh(kl);
+  auto f = [&](double x) {
+    return A * (std::cosh(k * x) - std::cos(k * x)) + B * (std::sinh(k * x) - std::sin(k * x));
+  };
+  const double fref = f(cc ? 0.5 * len : len);
+  const std::string sx = fmt::format("({}-({:.17g}))", along, x0);
+  const std::string ks = fmt::format("{:.17g}", k);
+  const std::string inside =
+      cc ? fmt::format("{0}>0 && {0}<{1:.17g}", sx, len) : fmt::format("{0}>0", sx);
+  std::string e = fmt::format(
+      "{5} ? "
+      "{1:.17g}*(({2:.17g})*(cosh({3}*{0})-cos({3}*{0}))+({4:.17g})*(sinh({3}*{0})-sin({3}*{0}))) "
+      ": 0",
+      sx, vl / fref, A, ks, B, inside);
+  std::vector<std::string> out(dim, "0");
+  out[a] = e;
+  return out;
+}
+
+// name, phase, continuum, formulation, material.
+void read_body_head(MapReader& b, BodySpec& body, const std::string& p, const Scene& s) {
+  body.phase = b.choice("phase", {"fluid", "solid", "wall", "rigid"});
+  body.continuum = b.text("continuum", body.name);
+  // MMB Eulerian (default), Ganzenmueller 2015 total-Lagrangian SPH, or Zhang et al. 2024's
+  // essentially non-hourglass updated Lagrangian formulation.
+  if (b.has("formulation")) {
+    if (body.phase != "solid") scene_error(p + ".formulation", "applies to solid bodies only");
+    const std::string f =
+        b.choice("formulation", {"eulerian", "total_lagrangian", "non_hourglass"});
+    body.total_lagrangian = f == "total_lagrangian";
+    body.formulation = f == "total_lagrangian" ? 1 : f == "non_hourglass" ? 2 : 0;
+  } else {
+    b.optional("formulation");
+  }
+  // Keys of the Eulerian scheme that a total-Lagrangian body does not have.
+  if (body.total_lagrangian)
+    for (const char* k : {"artificial_viscosity", "artificial_stress", "density_diffusion",
+                          "stress_divergence", "erosion"})
+      if (b.has(k)) scene_error(p + "." + k, "not available with formulation: total_lagrangian");
+  std::string mat = b.text("material");
+  body.material = s.material_index(mat);
+  if (body.material < 0) {
+    std::vector<std::string> names;
+    for (const auto& m : s.materials) names.push_back(m.name);
+    std::string hint = closest_word(mat, names);
+    scene_error(p + ".material", "no material named '" + mat + "' in materials" +
+                                     (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+  }
+}
+
+// `initial`: density and velocity expressions (or a velocity profile), temperature, spin.
+void read_initial(MapReader& b, BodySpec& body, const std::string& p, const Scene& s) {
+  const int dim = s.dimension;
+  if (!b.has("initial")) return void(b.optional("initial"));
+  MapReader in(b.node("initial"), p + ".initial");
+  body.density_expr = in.text("density", "");
+  body.temperature = in.positive("temperature", 0.0 + body.temperature);
+  if (!body.density_expr.empty())
+    check_expression(body.density_expr, in.at("density"), s.variables, "xyz");
+  if (in.has("velocity") && in.has("velocity_profile"))
+    scene_error(in.path(), "give either velocity or velocity_profile, not both");
+  if (in.has("velocity"))
+    body.velocity_expr = expressions(in, "velocity", dim, s.variables, "xyz");
+  else
+    in.optional("velocity");
+  if (in.has("velocity_profile"))
+    body.velocity_expr = velocity_profile(in, dim);
+  else
+    in.optional("velocity_profile");
+  if (in.has("angular_velocity")) {  // rigid clusters: about each cluster's centre of mass
+    if (body.phase != "rigid")
+      scene_error(in.at("angular_velocity"), "applies to rigid bodies only");
+    body.angular_velocity =
+        dim == 2 ? Point{in.number("angular_velocity")} : in.vector("angular_velocity", 3);
+  } else {
+    in.optional("angular_velocity");
+  }
+  in.finish();
+}
+
+// Stabilisation of the Eulerian scheme: artificial viscosity and stress, density diffusion,
+// stress divergence, the non-hourglass Laplacian.
+void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, const Scene& s) {
+  const int dim = s.dimension;
+  if (b.has("artificial_viscosity")) {
+    MapReader av(b.node("artificial_viscosity"), p + ".artificial_viscosity");
+    body.av_alpha = av.non_negative("alpha", 0.0);
+    body.av_beta = av.non_negative("beta", 0.0);
+    av.finish();
+  } else {
+    b.optional("artificial_viscosity");
+  }
+  if (b.has("artificial_stress")) {
+    MapReader as(b.node("artificial_stress"), p + ".artificial_stress");
+    body.as_epsilon = as.non_negative("epsilon", 0.3);
+    body.as_n = as.positive("n", 4.0);
+    as.finish();
+  } else {
+    b.optional("artificial_stress");
+  }
+  if (b.has("density_diffusion")) {
+    MapReader dd(b.node("density_diffusion"), p + ".density_diffusion");
+    body.delta = dd.non_negative("delta", 0.1);
+    dd.finish();
+  } else {
+    b.optional("density_diffusion");
+  }
+  if (b.has("stress_divergence")) {
+    if (body.phase != "solid")
+      scene_error(p + ".stress_divergence", "applies to solid bodies only");
+    body.corrected_divergence =
+        b.choice("stress_divergence", {"normalised", "corrected"}) == "corrected";
+  } else {
+    b.optional("stress_divergence");
+  }
+  if (body.formulation == 2 && s.materials[body.material].plasticity.on)
+    scene_error(p + ".formulation",
+                "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" +
+                    s.materials[body.material].name + "' has plasticity");
+  if (b.has("laplacian_zeta")) {
+    if (body.formulation != 2)
+      scene_error(p + ".laplacian_zeta", "applies with formulation: non_hourglass only");
+    body.laplacian_zeta = b.positive("laplacian_zeta");
+  } else {
+    b.optional("laplacian_zeta");
+    body.laplacian_zeta = 0.7 * dim + 2.1;  // Zhang et al. 2024, Sect. 6 (Wendland, h = 1.3 dp)
+  }
+}
+
+// Hourglass control (MMB Eq. 32-34) and self-contact of a solid body.
+void read_hourglass(MapReader& b, BodySpec& body, const std::string& p) {
+  if (b.has("hourglass")) {
+    if (body.phase != "solid")
+      scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
+    MapReader hg(b.node("hourglass"), p + ".hourglass");
+    // Ganzenmueller's alpha (Eq. 31-32) is MMB's xi (Eq. 32): one coefficient, two names.
+    if (hg.has("alpha") && hg.has("xi")) scene_error(hg.path(), "give either xi or alpha");
+    if (hg.has("alpha")) {
+      body.hg_xi = hg.non_negative("alpha", 0.0);
+      hg.optional("xi");
+    } else {
+      body.hg_xi = hg.non_negative("xi", 0.0);
+      hg.optional("alpha");
+    }
+    body.hg_zeta = hg.non_negative("zeta", 0.0);
+    body.hg_chi = hg.non_negative("chi", 0.0);
+    // Only the stiffness form (G15 Eq. 32) for total-Lagrangian bodies: zeta, chi must be 0.
+    if (body.total_lagrangian)
+      for (const char* k : {"zeta", "chi"})
+        if (hg.has(k) && hg.number(k) != 0)
+          scene_error(hg.at(k), "must be 0 with formulation: total_lagrangian");
+    if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
+    const std::string ref =
+        hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
+    body.hg_reference = ref == "initial" ? 0 : ref == "intermediate" ? 1 : 2;
+    // Ganzenmueller 2015 (Sect. 3): E of Eq. 32 replaced by the yield stress once plastic.
+    body.hg_plastic_switch = hg.boolean("plastic_switch", false);
+    hg.finish();
+  } else {
+    b.optional("hourglass");
+  }
+  if (b.has("self_contact")) {
+    if (body.phase != "solid") scene_error(p + ".self_contact", "applies to solid bodies only");
+    MapReader sc(b.node("self_contact"), p + ".self_contact");
+    body.self_contact = sc.positive("distance");
+    if (body.self_contact >= 1)
+      scene_error(p + ".self_contact.distance", "must be below 1 (a fraction of dp)");
+    sc.finish();
+  } else {
+    b.optional("self_contact");
+  }
+}
+
+// Fluid and wall keys: shifting, viscous form, slip, wall pressure.
+void read_fluid_keys(MapReader& b, BodySpec& body, const std::string& p) {
+  if (b.has("shifting")) {  // delta-plus particle shifting (Sun et al. 2017)
+    if (body.phase != "fluid") scene_error(p + ".shifting", "applies to fluid bodies only");
+    MapReader sh(b.node("shifting"), p + ".shifting");
+    // delta_plus (Sun et al. 2017, speed U) or transport_velocity (Adami et al. 2013, pressure P)
+    if (sh.choice("form", {"delta_plus", "transport_velocity"}, "delta_plus") == "delta_plus") {
+      body.shift_speed = sh.positive("speed");
+      body.shift_R = sh.non_negative("R", 0.2);
+      body.shift_n = sh.positive("n", 4.0);
+    } else {
+      body.shift_pb = sh.positive("pressure");
+    }
+    body.shift_consistent = sh.boolean("consistent", false);  // Sun et al. 2019 ALE terms
+    sh.finish();
+  } else {
+    b.optional("shifting");
+  }
+  if (b.has("viscous_form")) {
+    if (body.phase != "fluid") scene_error(p + ".viscous_form", "applies to fluid bodies only");
+    body.viscous_form = b.choice("viscous_form", {"auto", "morris", "central"});
+  } else {
+    b.optional("viscous_form");
+  }
+  if (b.has("slip")) {
+    if (body.phase == "fluid") scene_error(p + ".slip", "applies to wall-like (non-fluid) bodies");
+    body.no_slip = b.choice("slip", {"no_slip", "free_slip"}) == "no_slip";
+  } else {
+    b.optional("slip");
+  }
+  if (b.has("wall_pressure")) {
+    if (body.phase == "fluid")
+      scene_error(p + ".wall_pressure", "applies to wall-like (non-fluid) bodies");
+    body.non_negative_wall_pressure =
+        b.choice("wall_pressure", {"extrapolated", "non_negative"}) == "non_negative";
+  } else {
+    b.optional("wall_pressure");
+  }
+}
+
+// Damping, body force, fill, clusters, erosion.
+void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim) {
+  if (b.has("damping")) {  // dynamic relaxation to a static state (quasi-static loading)
+    if (body.phase != "solid" && body.phase != "fluid")
+      scene_error(p + ".damping", "applies to solid and fluid bodies");
+    body.damping = b.non_negative("damping", 0.0);
+  } else {
+    b.optional("damping");
+  }
+  if (b.has("body_force"))  // replaces the scene's body_force for this body
+    body.body_force = b.vector("body_force", dim);
+  else
+    b.optional("body_force");
+  const std::string fill = b.choice("fill", {"all", "rest", "shells"}, "all");
+  body.fill_rest = fill == "rest";
+  body.fill_shells = fill == "shells";
+  if (body.fill_shells && body.shape.kind != Shape::Kind::Sphere &&
+      body.shape.kind != Shape::Kind::Ring)
+    scene_error(p + ".fill", "shells needs a sphere (circle in 2D) or ring shape");
+  if (b.has("clusters")) {
+    if (body.phase != "rigid") scene_error(p + ".clusters", "applies to rigid bodies only");
+    body.cluster_per_part = b.choice("clusters", {"one", "per_part"}) == "per_part";
+    if (body.cluster_per_part && body.shape.kind != Shape::Kind::Union)
+      scene_error(p + ".clusters", "per_part needs a shape that is a union of parts");
+  } else {
+    b.optional("clusters");
+  }
+  if (b.has("erosion")) {
+    if (body.phase != "solid") scene_error(p + ".erosion", "applies to solid bodies only");
+    const std::string e = b.choice("erosion", {"none", "failed", "failed_surface"});
+    body.erosion = e == "none" ? 0 : e == "failed" ? 1 : 2;
+  } else {
+    b.optional("erosion");
+  }
+}
+
+BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
+  const int dim = s.dimension;
+  BodySpec body;
+  body.name = MapReader(node, "bodies[" + std::to_string(i) + "]").text("name");
+  const std::string p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
+  MapReader b(node, p);  // the name in the paths of the body's keys
+  b.text("name");
+  for (const auto& other : s.bodies)
+    if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
+  read_body_head(b, body, p, s);
+  body.shape = read_shape(b.node("shape"), p + ".shape", dim);
+  body.jitter = b.non_negative("jitter", 0.0);
+  if (body.jitter >= 0.5) scene_error(p + ".jitter", "must be below 0.5 (fraction of dp)");
+  const int seed = b.integer("seed", 1);
+  if (seed < 0) scene_error(p + ".seed", "must not be negative, got " + std::to_string(seed));
+  body.seed = static_cast<unsigned>(seed);
+  read_initial(b, body, p, s);
+  read_stabilisation(b, body, p, s);
+  read_hourglass(b, body, p);
+  read_fluid_keys(b, body, p);
+  read_other_keys(b, body, p, dim);
+  b.finish();
+  // The body must lie inside the domain.
+  Point lo, hi;
+  body.shape.bounds(lo, hi);
+  for (int a = 0; a < dim; ++a)
+    if (lo[a] < s.domain_min[a] - 1e-12 || hi[a] > s.domain_max[a] + 1e-12)
+      scene_error(p + ".shape", "extends outside the domain along " + std::string(1, "xyz"[a]) +
+                                    " ([" + std::to_string(lo[a]) + ", " + std::to_string(hi[a]) +
+                                    "] is not within [" + std::to_string(s.domain_min[a]) + ", " +
+                                    std::to_string(s.domain_max[a]) + "])");
+  return body;
+}
+
+// Bodies of one continuum share one stress divergence (their pairs use both particles' terms);
+// total-Lagrangian bodies have their own continuum and no periodic axes.
+void check_continua(const Scene& s) {
+  for (std::size_t i = 0; i < s.bodies.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.bodies[i].phase == "solid" && s.bodies[j].phase == "solid" &&
+          s.bodies[i].continuum == s.bodies[j].continuum &&
+          s.bodies[i].corrected_divergence != s.bodies[j].corrected_divergence)
+        scene_error(
+            "bodies[" + std::to_string(i) + "] (" + s.bodies[i].name + ").stress_divergence",
+            "differs from body '" + s.bodies[j].name + "' of the same continuum '" +
+                s.bodies[i].continuum + "'");
+  // Total-Lagrangian bodies: own continuum, no periodic axes; neo-Hookean materials only there.
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const auto& bi = s.bodies[i];
+    const std::string pi = "bodies[" + std::to_string(i) + "] (" + bi.name + ")";
+    const Material& mi = s.materials[bi.material];
+    if ((bi.phase == "solid" || bi.phase == "rigid") && mi.background_pressure > 0)
+      scene_error("materials." + mi.name + ".background_pressure",
+                  "applies to fluids only (body '" + bi.name + "' is " + bi.phase + ")");
+    if (bi.phase == "solid" && !bi.total_lagrangian && s.materials[bi.material].neo_hookean)
+      scene_error(pi + ".material", "elasticity: neo_hookean needs formulation: total_lagrangian");
+    if (s.has_mirror() && bi.phase == "rigid")
+      scene_error(pi + ".phase", "rigid bodies do not support domain.mirror");
+    if (bi.total_lagrangian)
+      for (std::size_t a = 0; a < s.mirror_min.size(); ++a)
+        if (s.mirror_min[a] && s.mirror_max[a])
+          scene_error("domain.mirror", "total_lagrangian bodies take one plane per axis");
+    if (!bi.total_lagrangian) continue;
+    for (std::size_t a = 0; a < s.periodic.size(); ++a)
+      if (s.periodic[a])
+        scene_error(pi + ".formulation", "total_lagrangian does not support periodic axes");
+    for (std::size_t j = 0; j < s.bodies.size(); ++j)
+      if (j != i && s.bodies[j].phase == "solid" && s.bodies[j].continuum == bi.continuum)
+        scene_error(pi + ".continuum",
+                    "a total_lagrangian body cannot share its continuum ('" + bi.continuum + "')");
+  }
+  // A fluid or wall body needs the fluid module.
+}
+
+// The modules the bodies need: fluid (fluid, wall), clusters and contact (rigid), solid.
+void switch_modules_on(Scene& s) {
+  for (const auto& body : s.bodies)
+    if ((body.phase == "fluid" || body.phase == "wall") &&
+        std::find(s.modules.begin(), s.modules.end(), "fluid") == s.modules.end())
+      s.modules.push_back("fluid");
+  // Rigid bodies are clusters, in contact with the other bodies (Cleary-type contact).
+  for (const char* m : {"clusters", "contact"})
+    for (const auto& body : s.bodies)
+      if (body.phase == "rigid" &&
+          std::find(s.modules.begin(), s.modules.end(), m) == s.modules.end())
+        s.modules.push_back(m);
+  // A solid body needs the solid module: switch it on.
+  for (const auto& body : s.bodies)
+    if (body.phase == "solid" &&
+        std::find(s.modules.begin(), s.modules.end(), "solid") == s.modules.end())
+      s.modules.push_back("solid");
+}
+
+}  // namespace
+
+std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim,
+                                     const Constants& vars, const std::string& variables) {
+  auto n = r.node(key);
+  if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+    scene_error(r.at(key), "expected a list of " + std::to_string(dim) + " expressions");
+  std::vector<std::string> out;
+  for (int a = 0; a < dim; ++a) {
+    std::string p = r.at(key) + "[" + std::to_string(a) + "]";
+    out.push_back(as_text(n[a], p));
+    check_expression(out.back(), p, vars, variables);
+  }
+  return out;
+}
+
+void read_bodies(MapReader& r, Scene& s) {
+  auto bodies = r.node("bodies");
+  if (!bodies.IsSequence() || bodies.size() == 0)
+    scene_error("bodies", "expected a list of bodies");
+  for (std::size_t i = 0; i < bodies.size(); ++i) s.bodies.push_back(read_body(bodies[i], i, s));
+  check_continua(s);
+  switch_modules_on(s);
+}
+
+void read_boundaries(MapReader& r, Scene& s) {
+  const int dim = s.dimension;
+  if (!r.has("boundary_conditions")) return void(r.optional("boundary_conditions"));
+  auto bcs = r.node("boundary_conditions");
+  if (!bcs.IsSequence()) scene_error("boundary_conditions", "expected a list");
+  for (std::size_t i = 0; i < bcs.size(); ++i) {
+    std::string p = "boundary_conditions[" + std::to_string(i) + "]";
+    MapReader b(bcs[i], p);
+    BoundarySpec bc;
+    bc.type = b.choice("type", {"fixed", "velocity"});
+    bc.name = b.text("name", "bc" + std::to_string(i));
+    if (int(b.has("body")) + int(b.has("region")) + int(b.has("point")) != 1)
+      scene_error(p, "give exactly one of 'body', 'region' or 'point'");
+    if (b.has("point")) {
+      bc.point = b.vector("point", dim);
+      b.optional("body");
+      b.optional("region");
+    } else if (b.has("body")) {
+      bc.body = b.text("body");
+      bool found = false;
+      for (const auto& body : s.bodies) found = found || body.name == bc.body;
+      if (!found) scene_error(p + ".body", "no body named '" + bc.body + "'");
+      b.optional("region");
+      b.optional("point");
+    } else {
+      bc.region = read_shape(b.node("region"), p + ".region", dim);
+      b.optional("body");
+      b.optional("point");
+    }
+    if (bc.type == "velocity") {  // "free": that component is
+                                  // not prescribed
+      auto n = b.node("velocity");
+      if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+        scene_error(b.at("velocity"),
+                    "expected a list of " + std::to_string(dim) + " expressions or 'free'");
+      for (int a = 0; a < dim; ++a) {
+        std::string q = b.at("velocity") + "[" + std::to_string(a) + "]";
+        bc.velocity_expr.push_back(as_text(n[a], q));
+        if (bc.velocity_expr.back() != "free")
+          check_expression(bc.velocity_expr.back(), q, s.variables);
+      }
+      if (std::all_of(bc.velocity_expr.begin(), bc.velocity_expr.end(),
+                      [](const std::string& e) { return e == "free"; }))
+        scene_error(b.at("velocity"),
+                    "prescribes no component (use at least "
+                    "one expression)");
+    }
+    b.finish();
+    s.boundaries.push_back(std::move(bc));
+  }
+}
+
+}  // namespace monosph

@@ -1,0 +1,229 @@
+// The scene sections `surfaces` (rigid surfaces, MMB Sect. 3), `contact`, `lubrication` and
+// `solid_contact`.
+#include <cmath>
+#include <fstream>
+
+#include "scene/scene_parts.hpp"
+
+namespace monosph {
+
+namespace {
+
+// A rigid surface (MMB Sect. 3; built by src/rigid): one geometry key, motion, contact parameters.
+// `folder` resolves a relative STL path (the scene file's folder; empty: the working directory).
+SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim,
+                         const std::filesystem::path& folder, const Constants& vars) {
+  MapReader r(node, index_path);
+  SurfaceSpec s;
+  s.name = r.text("name");
+  const std::string p = index_path + " (" + s.name + ")";
+  MapReader q(node, p);  // the same map, with the name in the paths of its keys
+  q.text("name");
+  s.friction = q.non_negative("friction", 0.0);
+  s.damping = q.non_negative("damping", 0.0);
+  s.stiffness = q.positive("stiffness", 0.0);
+  s.poisson_ratio = q.non_negative("poisson_ratio", 0.3);
+  if (s.poisson_ratio >= 0.5) scene_error(q.at("poisson_ratio"), "must be below 0.5");
+  if (q.has("poisson_ratio") && !q.has("stiffness"))
+    scene_error(q.at("poisson_ratio"), "needs a stiffness (a rigid surface has no Poisson ratio)");
+  s.scale = q.positive("scale", 1.0);
+  s.translate =
+      q.has("translate") ? q.vector("translate", dim) : (q.optional("translate"), Point(dim, 0.0));
+  if (q.has("velocity"))
+    s.velocity_expr = expressions(q, "velocity", dim, vars, "t");
+  else
+    s.velocity_expr.assign(dim, "0"), q.optional("velocity");
+  const std::vector<std::string> kinds2 = {"box", "plane", "segment", "polyline", "polygon"};
+  const std::vector<std::string> kinds3 = {"box", "plane", "rectangle", "triangles", "stl"};
+  const auto& kinds = dim == 2 ? kinds2 : kinds3;
+  std::vector<std::string> given;
+  for (const auto& k : kinds)
+    if (q.has(k)) given.push_back(k);
+  const std::string allowed =
+      dim == 2 ? "box, plane, segment, polyline, polygon" : "box, plane, rectangle, triangles, stl";
+  if (given.size() != 1) {
+    if (given.empty()) q.finish();  // a misspelt geometry key is named there
+    scene_error(p, "give exactly one geometry key (" + std::to_string(dim) + "D: " + allowed + ")");
+  }
+  s.kind = given[0];
+  const std::string g = q.at(s.kind);
+  auto points = [&](std::size_t min_count) {
+    auto v = q.node(s.kind);
+    if (!v.IsSequence() || v.size() < min_count)
+      scene_error(g, "expected a list of at least " + std::to_string(min_count) + " points");
+    for (std::size_t i = 0; i < v.size(); ++i)
+      s.points.push_back(as_vector(v[i], g + "[" + std::to_string(i) + "]", dim));
+  };
+  auto distinct = [&](std::size_t i, std::size_t j) {
+    double d2 = 0;
+    for (int a = 0; a < dim; ++a) d2 += std::pow(s.points[i][a] - s.points[j][a], 2);
+    if (!(d2 > 0))
+      scene_error(g, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide");
+  };
+  if (s.kind == "box") {
+    MapReader b(q.node("box"), g);
+    s.points = {b.vector("min", dim), b.vector("max", dim)};
+    b.finish();
+    for (int a = 0; a < dim; ++a)
+      if (!(s.points[1][a] > s.points[0][a]))
+        scene_error(g + ".max", "must be greater than min in every axis");
+  } else if (s.kind == "plane") {
+    MapReader b(q.node("plane"), g);
+    s.points = {b.vector("point", dim), b.vector("normal", dim)};
+    double nn = 0;
+    for (double c : s.points[1]) nn += c * c;
+    if (!(nn > 0)) scene_error(g + ".normal", "must not be zero");
+    if (dim == 2) {
+      s.size[0] = b.positive("size");
+    } else {
+      auto sz = b.vector("size", 2);
+      if (!(sz[0] > 0 && sz[1] > 0)) scene_error(g + ".size", "side lengths must be positive");
+      s.size[0] = sz[0], s.size[1] = sz[1];
+    }
+    b.finish();
+  } else if (s.kind == "segment") {
+    points(2);
+    if (s.points.size() != 2) scene_error(g, "expected two points [[x0, y0], [x1, y1]]");
+    distinct(0, 1);
+  } else if (s.kind == "polyline" || s.kind == "polygon") {
+    points(s.kind == "polyline" ? 2 : 3);
+    for (std::size_t i = 0; i + 1 < s.points.size(); ++i) distinct(i, i + 1);
+    if (s.kind == "polygon") distinct(s.points.size() - 1, 0);
+  } else if (s.kind == "rectangle") {
+    points(4);
+    if (s.points.size() != 4) scene_error(g, "expected four corners in order");
+    for (std::size_t i = 0; i < 4; ++i) distinct(i, (i + 1) % 4);
+  } else if (s.kind == "triangles") {
+    auto v = q.node("triangles");
+    if (!v.IsSequence() || v.size() < 1) scene_error(g, "expected a list of triangles");
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::string ti = g + "[" + std::to_string(i) + "]";
+      if (!v[i].IsSequence() || v[i].size() != 3)
+        scene_error(ti, "expected three corners [[x, y, z], [x, y, z], [x, y, z]]");
+      for (std::size_t c = 0; c < 3; ++c)
+        s.points.push_back(as_vector(v[i][c], ti + "[" + std::to_string(c) + "]", 3));
+    }
+  } else {  // stl
+    std::filesystem::path f = q.text("stl");
+    if (f.is_relative()) f = folder / f;
+    std::error_code ec;
+    f = std::filesystem::absolute(f, ec).lexically_normal();
+    std::ifstream in(f, std::ios::binary);
+    if (!in || std::filesystem::is_directory(f, ec))
+      scene_error(g, "cannot read STL file '" + f.string() + "'");
+    s.file = f.string();
+    node["stl"] = s.file;  // absolute in the stored scene text, so that a restart finds it
+  }
+  q.finish();
+  return s;
+}
+
+}  // namespace
+
+// Section `lubrication` (src/coupling/lubrication_module.hpp): needs a rigid and a fluid body;
+// the film viscosity defaults to the fluid's.
+void read_lubrication(MapReader& r, Scene& s) {
+  if (!r.has("lubrication")) {
+    r.optional("lubrication");
+    return;
+  }
+  MapReader c(r.node("lubrication"), "lubrication");
+  auto& l = s.lubrication;
+  l.on = true;
+  l.cutoff = c.positive("cutoff", 1.5);
+  l.min_gap = c.positive("min_gap", 0.05);
+  if (!(l.min_gap < l.cutoff))
+    scene_error("lubrication.min_gap", "must be below lubrication.cutoff");
+  const BodySpec* fluid = nullptr;
+  bool rigid = false;
+  for (const auto& b : s.bodies) {
+    if (b.phase == "fluid" && !fluid) fluid = &b;
+    rigid = rigid || b.phase == "rigid";
+  }
+  if (!rigid)
+    scene_error("lubrication",
+                "needs a rigid body (the film lies between a cluster and a surface)");
+  if (c.has("viscosity")) {
+    l.viscosity = c.positive("viscosity");
+  } else {
+    if (!fluid) scene_error("lubrication.viscosity", "is required without a fluid body");
+    l.viscosity = s.materials[fluid->material].viscosity;
+    if (!(l.viscosity > 0))
+      scene_error("lubrication.viscosity", "the fluid's material has no viscosity: give one");
+  }
+  c.finish();
+  if (std::find(s.modules.begin(), s.modules.end(), "lubrication") == s.modules.end())
+    s.modules.push_back("lubrication");
+}
+
+void read_surfaces(MapReader& r, Scene& s, YAML::Node& root, const std::string& origin) {
+  if (!r.has("surfaces")) return void(r.optional("surfaces"));
+  auto list = r.node("surfaces");
+  if (!list.IsSequence() || list.size() == 0) scene_error("surfaces", "expected a list");
+  std::error_code ec;
+  const std::filesystem::path folder = std::filesystem::is_regular_file(origin, ec)
+                                           ? std::filesystem::path(origin).parent_path()
+                                           : std::filesystem::path();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string p = "surfaces[" + std::to_string(i) + "]";
+    s.surfaces.push_back(read_surface(list[i], p, s.dimension, folder, s.variables));
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.surfaces[j].name == s.surfaces[i].name)
+        scene_error(p + " (" + s.surfaces[i].name + ").name", "duplicate surface name");
+  }
+  YAML::Emitter out;  // STL paths were made absolute
+  out << root;
+  s.yaml = out.c_str();
+  if (std::find(s.modules.begin(), s.modules.end(), "rigid") == s.modules.end())
+    s.modules.push_back("rigid");
+}
+
+// Rigid-cluster contact (equations.md Sect. 6).
+void read_contact(MapReader& r, Scene& s) {
+  if (!r.has("contact")) return void(r.optional("contact"));
+  MapReader c(r.node("contact"), "contact");
+  s.contact.law = c.choice("law", {"hertz", "lennard_jones"}, "hertz");
+  s.contact.distance = c.positive("distance", 1.0);
+  s.contact.damping = c.non_negative("damping", 0.0);
+  s.contact.friction = c.non_negative("friction", 0.0);
+  if (s.contact.law == "lennard_jones") {
+    s.contact.strength = c.positive("strength");
+    s.contact.p1 = c.positive("p1", 12.0);
+    s.contact.p2 = c.positive("p2", 4.0);
+    if (!(s.contact.p1 > s.contact.p2)) scene_error("contact.p1", "must exceed contact.p2");
+  } else {
+    for (const char* k : {"strength", "p1", "p2"})
+      if (c.has(k)) scene_error(std::string("contact.") + k, "applies to law lennard_jones only");
+  }
+  c.finish();
+}
+
+// Contact between solid bodies of different continua (src/coupling/solid_contact_module.hpp):
+// needs two solid bodies that are not one continuum; the contact diameter lies within the kernel
+// support (h >= dp, support >= 2h).
+void read_solid_contact(MapReader& r, Scene& s) {
+  if (!r.has("solid_contact")) return void(r.optional("solid_contact"));
+  MapReader c(r.node("solid_contact"), "solid_contact");
+  auto& sc = s.solid_contact;
+  sc.on = true;
+  sc.distance = c.positive("distance", 1.0);
+  if (sc.distance > 2)
+    scene_error("solid_contact.distance",
+                "must lie in (0, 2] (the contact diameter in dp, within the kernel support)");
+  sc.damping = c.non_negative("damping", 0.0);
+  sc.friction = c.non_negative("friction", 0.0);
+  c.finish();
+  std::vector<std::string> continua;
+  for (const auto& b : s.bodies)
+    if (b.phase == "solid" &&
+        std::find(continua.begin(), continua.end(), b.continuum) == continua.end())
+      continua.push_back(b.continuum);
+  if (continua.size() < 2)
+    scene_error("solid_contact",
+                "needs two solid bodies of different continua (bodies of one continuum meet "
+                "through the SPH equations)");
+  if (std::find(s.modules.begin(), s.modules.end(), "solid_contact") == s.modules.end())
+    s.modules.push_back("solid_contact");
+}
+
+}  // namespace monosph
