@@ -6,12 +6,22 @@
 #include "coupling/contact_module.hpp"
 #include "coupling/lubrication_module.hpp"
 #include "coupling/solid_contact_module.hpp"
+#include "fluid/fluid_keys.hpp"
 #include "fluid/fluid_module.hpp"
+#include "rigid/cluster_keys.hpp"
 #include "rigid/cluster_module.hpp"
 #include "rigid/rigid_surface_module.hpp"
+#include "solid/solid_keys.hpp"
 #include "solid/solid_module.hpp"
 
 namespace monosph {
+
+// The body keys each module reads (in this order: the order of their messages).
+void register_modules() {
+  register_module_keys(fluid_keys());
+  register_module_keys(solid_keys());
+  register_module_keys(cluster_keys());
+}
 
 template <int D>
 void assemble_modules(Simulation<D>& sim) {

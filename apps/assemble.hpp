@@ -4,6 +4,9 @@
 
 namespace monosph {
 
+// Registers every module's scene keys (scene/module_keys.hpp); call once before reading a scene.
+void register_modules();
+
 template <int D>
 void assemble_modules(Simulation<D>& sim);
 

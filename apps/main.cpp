@@ -6,6 +6,7 @@
 #include <climits>
 #include <cmath>
 
+#include "assemble.hpp"
 #include "bench.hpp"
 #include "core/types.hpp"
 #include "info.hpp"
@@ -86,6 +87,7 @@ void check_restart_overrides(const std::vector<std::string>& sets) {
 
 int main(int argc, char** argv) {
   monosph::Comm::init(&argc, &argv);  // under mpirun only
+  monosph::register_modules();
   const int code = run_main(argc, argv);
   monosph::Comm::finalize();
   return code;

@@ -45,22 +45,14 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
                      : b.phase == "wall"  ? kWall
                      : b.phase == "rigid" ? kRigid
                                           : kSolid;
-    BodyInfo info{b.name, ph,      b.material, b.av_alpha, b.av_beta, b.as_epsilon,
-                  b.as_n, b.delta, b.hg_xi,    b.hg_zeta,  b.hg_chi,  b.hg_reference};
+    BodyInfo info{b.name, ph, b.material, b.av_alpha, b.av_beta, b.as_epsilon, b.as_n, b.delta};
     info.corrected_divergence = b.corrected_divergence;
     info.formulation = b.formulation;
-    info.laplacian_zeta = b.laplacian_zeta;
-    info.hg_plastic_switch = b.hg_plastic_switch;
-    info.self_contact = b.self_contact;
     info.total_lagrangian = b.total_lagrangian;
     info.temperature = b.temperature;
-    info.erosion = b.erosion;
     info.group = g;
-    info.shift_speed = b.shift_speed, info.shift_R = b.shift_R, info.shift_n = b.shift_n;
-    info.shift_pb = b.shift_pb, info.shift_consistent = b.shift_consistent;
-    info.no_slip = b.no_slip;
-    info.non_negative_wall_pressure = b.non_negative_wall_pressure;
     info.damping = b.damping;
+    info.params = b.params;
     const Point& bf = b.body_force.empty() ? scene_.body_force : b.body_force;
     for (int a = 0; a < D; ++a) info.body_force[a] = bf[a];
     bodies_.push_back(std::move(info));

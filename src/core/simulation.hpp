@@ -87,25 +87,15 @@ struct BodyInfo {
   double av_alpha, av_beta;           // artificial viscosity (MMB Eq. 17-18)
   double as_epsilon, as_n;            // artificial stress (MMB Eq. 19-20)
   double delta;                       // density diffusion (MMB Eq. 21)
-  double hg_xi, hg_zeta, hg_chi;      // hourglass control (MMB Eq. 32-34)
-  int hg_reference;                   // 0 initial (MMB Eq. 31), 1 intermediate, 2 least-squares fit
   bool corrected_divergence = false;  // stress divergence with L_i (Bonet & Lok) or 1/S_i (MMB)
   int formulation = 0;                // 0 Eulerian (MMB), 2 non-hourglass (Zhang et al. 2024)
-  double laplacian_zeta = 0;          // Zhang et al. 2024 Eq. 19-20
-  bool hg_plastic_switch = false;     // Ganzenmueller 2015: E -> sigma_y in Eq. 32 when plastic
   bool total_lagrangian = false;      // formulation: total_lagrangian (Ganzenmueller 2015)
   double temperature = 0;             // initial temperature (K)
-  int erosion = 0;                    // 0 none, 1 failed particles, 2 failed surface particles
-  double shift_speed = 0, shift_R = 0.2, shift_n = 4;  // delta-plus shifting (fluid)
-  double shift_pb = 0;                      // transport-velocity shifting (Adami et al. 2013), Pa
-  bool shift_consistent = false;            // Sun et al. 2019 ALE terms with the shift
-  bool no_slip = true;                      // wall-like body seen by the fluid
-  bool non_negative_wall_pressure = false;  // its Adami pressure clipped at 0
   int group = 0;  // interaction group: bodies of one continuum share it (-1 fluid, -2 walls,
                   // -3 rigid)
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)
   double damping = 0;                  // mass-proportional damping rate [1/s]
-  double self_contact = 0;             // Hertz core diameter between own particles, in dp (0 off)
+  BodyParamMap params{};               // each module's parameters (scene/module_keys.hpp)
 };
 
 // Wall time of each pass of a step, summed over the run (the slowest pass shows in summary.json).

@@ -2,8 +2,8 @@
 // Pieces of the particle contact laws shared by the grain contact (contact_module) and the contact
 // between solid bodies (solid_contact_module): the plane-strain compliance of a material (for the
 // Hertz E*) and the regularised Coulomb friction of a pair.
-#include "core/scene.hpp"
 #include "core/types.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 

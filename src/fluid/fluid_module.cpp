@@ -49,12 +49,13 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   // turned at 1.77 gamma/2 instead of 0.95; cases/couette_cylinder).
   bool any_rigid = false;
   for (const auto& b : sim.bodies()) any_rigid = any_rigid || b.phase == kRigid;
-  for (const auto& b : sim.scene().bodies)
-    if (b.phase == "fluid")
-      central_ = central_ || b.viscous_form == "central" || (b.viscous_form == "auto" && any_rigid);
-  for (const auto& b : sim.bodies()) {
-    any_shift_ = any_shift_ || b.shift_speed > 0 || b.shift_pb > 0;
-    any_consistent_ = any_consistent_ || b.shift_consistent;
+  for (const auto& b : sim.bodies()) keys_.push_back(body_params<FluidBodyKeys>(b.params));
+  for (std::size_t i = 0; i < keys_.size(); ++i) {
+    const FluidBodyKeys& k = keys_[i];
+    if (sim.bodies()[i].phase == kFluid)
+      central_ = central_ || k.viscous_form == "central" || (k.viscous_form == "auto" && any_rigid);
+    any_shift_ = any_shift_ || k.shift_speed > 0 || k.shift_pb > 0;
+    any_consistent_ = any_consistent_ || k.shift_consistent;
   }
   if (any_wall_) {
     kaw_ = p.add_field("wall_acceleration", D);
@@ -96,7 +97,6 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
   std::span<Vec<D>> aw;
   if (kaw_ >= 0) aw = p.template view<Vec<D>>(kaw_);
   auto bd = p.body();
-  const auto& bodies = sim.bodies();
   // Velocity gradient of the rigid motion of cluster particles (set by the clusters module).
   const int kgrad_rigid = p.find("rigid_velocity_gradient");
   const bool kG = kgrad_rigid >= 0;
@@ -152,7 +152,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
         pw[i] = (sp - ai.dot(srw)) / sw;
         // `wall_pressure: non_negative`: no suction at free surfaces, where a negative p_w holds
         // fluid particles on the wall (sticking; cases/stability/README.md).
-        if (bodies[bd[i]].non_negative_wall_pressure) pw[i] = std::max(pw[i], 0.0);
+        if (keys_[bd[i]].non_negative_wall_pressure) pw[i] = std::max(pw[i], 0.0);
         vw[i] = sv / sw;
       } else {
         pw[i] = 0;
@@ -210,7 +210,7 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] != kFluid) continue;  // walls keep drho = 0 (nothing writes it)
     const double delta = bodies[bd[i]].delta;
-    const bool ale = bodies[bd[i]].shift_consistent;
+    const bool ale = keys_[bd[i]].shift_consistent;
     double div = 0, diff = 0, ale_rate = 0;
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
@@ -273,7 +273,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
-      const BodyInfo& b = bodies[bd[i]];
+      const FluidBodyKeys& b = keys_[bd[i]];
       const double nui = nu_of(i), ali = alpha_of(i);
       Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), ale = Vec<D>::Zero();
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
@@ -285,7 +285,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
         // Sun et al. 2017, Eq. 3: -(1/rho_i) sum_j (p_i + p_j) grad W V_j; a wall-like j enters
         // with its extrapolated pressure and its own (geometric) volume (Adami et al. 2012).
         ap -= ((pr[i] + (fj ? pr[j] : pw[j])) * vj) * gw;
-        if (fj || bodies[bd[j]].no_slip) {
+        if (fj || keys_[bd[j]].no_slip) {
           // pi_ij = v_ij . r_ij / (r^2 + 0.01 h^2); at a no-slip wall v_j -> 2 v_w - v~_w.
           const Vec<D> vjv = fj ? Vec<D>(v[j]) : Vec<D>(2.0 * v[j] - vw[j]);
           double nu = fj ? 0.5 * (nui + nu_of(j)) : nui;
@@ -301,7 +301,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
     } else {
       // The reaction of every fluid-pair force above (exactly opposite): force on particle i.
       Vec<D> f = Vec<D>::Zero();
-      const bool noslip = bodies[bd[i]].no_slip;
+      const bool noslip = keys_[bd[i]].no_slip;
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         if (ph[j] != kFluid) continue;
@@ -332,7 +332,6 @@ void FluidModule<D>::shift_velocities(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& pl = sim.pairs();
   const auto& vol = sim.volumes();
-  const auto& bodies = sim.bodies();
   auto ph = p.phase();
   auto rho = p.rho();
   auto bd = p.body();
@@ -343,7 +342,7 @@ void FluidModule<D>::shift_velocities(Simulation<D>& sim) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] != kFluid) continue;
-    const BodyInfo& b = bodies[bd[i]];
+    const FluidBodyKeys& b = keys_[bd[i]];
     Vec<D> sh = Vec<D>::Zero(), gl = Vec<D>::Zero(), tv = Vec<D>::Zero();  // gl: sum V_j grad W
     bool near_surface = lam[i] <= 0.75;
     const bool on = b.shift_speed > 0 || b.shift_pb > 0;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/simulation.hpp"
+#include "fluid/fluid_keys.hpp"
 
 namespace monosph {
 
@@ -33,6 +34,7 @@ class FluidModule : public Module<D> {
   void probe(Simulation<D>& sim, const ProbeSpec& s, std::vector<double>& out) override;
 
  private:
+  std::vector<FluidBodyKeys> keys_;                // per body (fluid_keys.hpp)
   void check_no_free_surface(Simulation<D>& sim);  // background pressure: none allowed
   void shift_velocities(Simulation<D>& sim);       // delta-plus or transport-velocity shift
   bool any_shift_ = false, any_consistent_ = false;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "rigid/cluster_keys.hpp"
+
 namespace monosph {
 
 namespace {
@@ -155,13 +157,14 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     if (sim.bodies()[b].phase != kRigid) continue;
     const BodySpec& spec = scene.bodies[b];
-    const std::size_t nparts = spec.cluster_per_part ? spec.shape.parts.size() : 1;
+    const bool per_part = body_params<ClusterBodyKeys>(spec.params).per_part;
+    const std::size_t nparts = per_part ? spec.shape.parts.size() : 1;
     std::vector<double> count(nparts, 0.0);
     std::vector<std::size_t> part_of(p.size(), 0);
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (bd[i] != static_cast<std::int64_t>(b)) continue;
       std::size_t part = 0;
-      if (spec.cluster_per_part) {
+      if (per_part) {
         const Point xi(x[i].data(), x[i].data() + D);
         while (part < nparts && !spec.shape.parts[part].contains(xi)) ++part;
         if (part == nparts) {

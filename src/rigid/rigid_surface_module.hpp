@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "core/expression.hpp"
 #include "core/simulation.hpp"
+#include "scene/expression.hpp"
 #include "surface.hpp"
 
 namespace monosph {

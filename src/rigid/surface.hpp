@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/hertz.hpp"
-#include "core/scene.hpp"
 #include "core/types.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 

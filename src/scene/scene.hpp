@@ -14,6 +14,7 @@
 
 #include "core/kernel.hpp"
 #include "scene/expression.hpp"
+#include "scene/module_keys.hpp"
 
 namespace monosph {
 
@@ -87,47 +88,27 @@ struct BodySpec {
   Shape shape;
   double jitter = 0;  // random displacement of lattice nodes, fraction of dp
   unsigned seed = 1;
-  std::string density_expr;                   // initial density (default rho0)
-  std::vector<std::string> velocity_expr;     // initial velocity components
-  double av_alpha = 0, av_beta = 0;           // artificial viscosity (MMB Eq. 17-18)
-  double as_epsilon = 0, as_n = 4;            // artificial stress (MMB Eq. 19-20)
-  double delta = 0;                           // density diffusion (MMB Eq. 21)
-  double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
-  // Self-contact of a solid body: Hertz spheres of diameter self_contact dp between its own
-  // particles (0: off). A floor under the pair distance, where the kernel gradient vanishes.
-  double self_contact = 0;
-  int hg_reference = 0;  // error vector against: 0 initial (MMB), 1 intermediate, 2 least squares
+  std::string density_expr;                // initial density (default rho0)
+  std::vector<std::string> velocity_expr;  // initial velocity components
+  double av_alpha = 0, av_beta = 0;        // artificial viscosity (MMB Eq. 17-18)
+  double as_epsilon = 0, as_n = 4;         // artificial stress (MMB Eq. 19-20)
+  double delta = 0;                        // density diffusion (MMB Eq. 21)
   // Stress divergence: false = normalised gradient (MMB Eq. 10-11); true = corrected gradient,
   // the adjoint of the corrected velocity gradient (Bonet & Lok 1999; docs/theory.md).
   bool corrected_divergence = false;
   // Solid formulation: 0 Eulerian-kernel MMB (stress divergence), 1 total Lagrangian, 2 essentially
   // non-hourglass updated Lagrangian (Zhang et al. 2024: shear force from a Laplacian).
   int formulation = 0;
-  double laplacian_zeta = 0;       // Zhang et al. 2024 Eq. 19-20 (default 0.7 d + 2.1)
-  bool hg_plastic_switch = false;  // Ganzenmueller: E -> yield stress in Eq. 32 when plastic
   // `formulation: total_lagrangian`: reference-configuration kernels (Ganzenmueller 2015, Sect. 2)
   bool total_lagrangian = false;
-  double temperature = 0;  // initial temperature, K (0: the material's T_ref)
-  // delta-plus particle shifting of a fluid body (Sun et al. 2017): reference speed U (0: off),
-  // the anti-clustering term R (W_ij / W(dp))^n.
-  double shift_speed = 0, shift_R = 0.2, shift_n = 4;
-  // `shifting: {form: transport_velocity, pressure: P}`: Adami, Hu & Adams 2013 shift velocity
-  // from a constant background pressure P (> 0; 0: the delta-plus form above).
-  double shift_pb = 0;
-  // `shifting: {consistent: true}`: the ALE terms of Sun et al. 2019 in continuity and momentum.
-  bool shift_consistent = false;
-  bool no_slip = true;  // a wall-like (non-fluid) body seen by the fluid: no-slip or free-slip
-  bool non_negative_wall_pressure = false;  // Adami p_w clipped at 0 (no suction at free surfaces)
-  // fluid viscous term: morris (Morris et al. 1997), central (Sun et al. 2017, conserves angular
-  // momentum), auto (central when the scene has rigid clusters, else morris)
-  std::string viscous_form = "auto";
-  int erosion = 0;                // remove particles with D >= 1: 0 never, 1 all, 2 surface only
-  Point body_force;               // replaces the scene's body_force when given
-  double damping = 0;             // mass-proportional damping rate c [1/s]: a -= c v
-  bool fill_rest = false;         // takes only the lattice nodes no other body takes
-  bool fill_shells = false;       // body-fitted concentric shells (sphere, ring; shell_fill.hpp)
-  bool cluster_per_part = false;  // rigid: one cluster per part of a union shape (else one)
-  Point angular_velocity;         // rigid: initial (2D: one value; 3D: a vector)
+  double temperature = 0;    // initial temperature, K (0: the material's T_ref)
+  Point body_force;          // replaces the scene's body_force when given
+  double damping = 0;        // mass-proportional damping rate c [1/s]: a -= c v
+  bool fill_rest = false;    // takes only the lattice nodes no other body takes
+  bool fill_shells = false;  // body-fitted concentric shells (sphere, ring; shell_fill.hpp)
+  Point angular_velocity;    // rigid: initial (2D: one value; 3D: a vector)
+  // Each module's parameters of this body, read by the module (scene/module_keys.hpp).
+  BodyParamMap params;
 };
 
 // Contact between rigid-cluster particles and other bodies' particles (substitute for the law of

@@ -77,8 +77,8 @@ void read_body_head(MapReader& b, BodySpec& body, const std::string& p, const Sc
   }
   // Keys of the Eulerian scheme that a total-Lagrangian body does not have.
   if (body.total_lagrangian)
-    for (const char* k : {"artificial_viscosity", "artificial_stress", "density_diffusion",
-                          "stress_divergence", "erosion"})
+    for (const char* k :
+         {"artificial_viscosity", "artificial_stress", "density_diffusion", "stress_divergence"})
       if (b.has(k)) scene_error(p + "." + k, "not available with formulation: total_lagrangian");
   std::string mat = b.text("material");
   body.material = s.material_index(mat);
@@ -122,9 +122,8 @@ void read_initial(MapReader& b, BodySpec& body, const std::string& p, const Scen
 }
 
 // Stabilisation of the Eulerian scheme: artificial viscosity and stress, density diffusion,
-// stress divergence, the non-hourglass Laplacian.
+// stress divergence.
 void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, const Scene& s) {
-  const int dim = s.dimension;
   if (b.has("artificial_viscosity")) {
     MapReader av(b.node("artificial_viscosity"), p + ".artificial_viscosity");
     body.av_alpha = av.non_negative("alpha", 0.0);
@@ -160,101 +159,9 @@ void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, cons
     scene_error(p + ".formulation",
                 "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" +
                     s.materials[body.material].name + "' has plasticity");
-  if (b.has("laplacian_zeta")) {
-    if (body.formulation != 2)
-      scene_error(p + ".laplacian_zeta", "applies with formulation: non_hourglass only");
-    body.laplacian_zeta = b.positive("laplacian_zeta");
-  } else {
-    b.optional("laplacian_zeta");
-    body.laplacian_zeta = 0.7 * dim + 2.1;  // Zhang et al. 2024, Sect. 6 (Wendland, h = 1.3 dp)
-  }
 }
 
-// Hourglass control (MMB Eq. 32-34) and self-contact of a solid body.
-void read_hourglass(MapReader& b, BodySpec& body, const std::string& p) {
-  if (b.has("hourglass")) {
-    if (body.phase != "solid")
-      scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
-    MapReader hg(b.node("hourglass"), p + ".hourglass");
-    // Ganzenmueller's alpha (Eq. 31-32) is MMB's xi (Eq. 32): one coefficient, two names.
-    if (hg.has("alpha") && hg.has("xi")) scene_error(hg.path(), "give either xi or alpha");
-    if (hg.has("alpha")) {
-      body.hg_xi = hg.non_negative("alpha", 0.0);
-      hg.optional("xi");
-    } else {
-      body.hg_xi = hg.non_negative("xi", 0.0);
-      hg.optional("alpha");
-    }
-    body.hg_zeta = hg.non_negative("zeta", 0.0);
-    body.hg_chi = hg.non_negative("chi", 0.0);
-    // Only the stiffness form (G15 Eq. 32) for total-Lagrangian bodies: zeta, chi must be 0.
-    if (body.total_lagrangian)
-      for (const char* k : {"zeta", "chi"})
-        if (hg.has(k) && hg.number(k) != 0)
-          scene_error(hg.at(k), "must be 0 with formulation: total_lagrangian");
-    if (body.hg_chi > 1) scene_error(p + ".hourglass.chi", "must be between 0 and 1");
-    const std::string ref =
-        hg.choice("reference", {"initial", "intermediate", "least_squares"}, "initial");
-    body.hg_reference = ref == "initial" ? 0 : ref == "intermediate" ? 1 : 2;
-    // Ganzenmueller 2015 (Sect. 3): E of Eq. 32 replaced by the yield stress once plastic.
-    body.hg_plastic_switch = hg.boolean("plastic_switch", false);
-    hg.finish();
-  } else {
-    b.optional("hourglass");
-  }
-  if (b.has("self_contact")) {
-    if (body.phase != "solid") scene_error(p + ".self_contact", "applies to solid bodies only");
-    MapReader sc(b.node("self_contact"), p + ".self_contact");
-    body.self_contact = sc.positive("distance");
-    if (body.self_contact >= 1)
-      scene_error(p + ".self_contact.distance", "must be below 1 (a fraction of dp)");
-    sc.finish();
-  } else {
-    b.optional("self_contact");
-  }
-}
-
-// Fluid and wall keys: shifting, viscous form, slip, wall pressure.
-void read_fluid_keys(MapReader& b, BodySpec& body, const std::string& p) {
-  if (b.has("shifting")) {  // delta-plus particle shifting (Sun et al. 2017)
-    if (body.phase != "fluid") scene_error(p + ".shifting", "applies to fluid bodies only");
-    MapReader sh(b.node("shifting"), p + ".shifting");
-    // delta_plus (Sun et al. 2017, speed U) or transport_velocity (Adami et al. 2013, pressure P)
-    if (sh.choice("form", {"delta_plus", "transport_velocity"}, "delta_plus") == "delta_plus") {
-      body.shift_speed = sh.positive("speed");
-      body.shift_R = sh.non_negative("R", 0.2);
-      body.shift_n = sh.positive("n", 4.0);
-    } else {
-      body.shift_pb = sh.positive("pressure");
-    }
-    body.shift_consistent = sh.boolean("consistent", false);  // Sun et al. 2019 ALE terms
-    sh.finish();
-  } else {
-    b.optional("shifting");
-  }
-  if (b.has("viscous_form")) {
-    if (body.phase != "fluid") scene_error(p + ".viscous_form", "applies to fluid bodies only");
-    body.viscous_form = b.choice("viscous_form", {"auto", "morris", "central"});
-  } else {
-    b.optional("viscous_form");
-  }
-  if (b.has("slip")) {
-    if (body.phase == "fluid") scene_error(p + ".slip", "applies to wall-like (non-fluid) bodies");
-    body.no_slip = b.choice("slip", {"no_slip", "free_slip"}) == "no_slip";
-  } else {
-    b.optional("slip");
-  }
-  if (b.has("wall_pressure")) {
-    if (body.phase == "fluid")
-      scene_error(p + ".wall_pressure", "applies to wall-like (non-fluid) bodies");
-    body.non_negative_wall_pressure =
-        b.choice("wall_pressure", {"extrapolated", "non_negative"}) == "non_negative";
-  } else {
-    b.optional("wall_pressure");
-  }
-}
-
-// Damping, body force, fill, clusters, erosion.
+// Damping, body force, fill.
 void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim) {
   if (b.has("damping")) {  // dynamic relaxation to a static state (quasi-static loading)
     if (body.phase != "solid" && body.phase != "fluid")
@@ -273,21 +180,6 @@ void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim
   if (body.fill_shells && body.shape.kind != Shape::Kind::Sphere &&
       body.shape.kind != Shape::Kind::Ring)
     scene_error(p + ".fill", "shells needs a sphere (circle in 2D) or ring shape");
-  if (b.has("clusters")) {
-    if (body.phase != "rigid") scene_error(p + ".clusters", "applies to rigid bodies only");
-    body.cluster_per_part = b.choice("clusters", {"one", "per_part"}) == "per_part";
-    if (body.cluster_per_part && body.shape.kind != Shape::Kind::Union)
-      scene_error(p + ".clusters", "per_part needs a shape that is a union of parts");
-  } else {
-    b.optional("clusters");
-  }
-  if (b.has("erosion")) {
-    if (body.phase != "solid") scene_error(p + ".erosion", "applies to solid bodies only");
-    const std::string e = b.choice("erosion", {"none", "failed", "failed_surface"});
-    body.erosion = e == "none" ? 0 : e == "failed" ? 1 : 2;
-  } else {
-    b.optional("erosion");
-  }
 }
 
 BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
@@ -308,9 +200,8 @@ BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   body.seed = static_cast<unsigned>(seed);
   read_initial(b, body, p, s);
   read_stabilisation(b, body, p, s);
-  read_hourglass(b, body, p);
-  read_fluid_keys(b, body, p);
   read_other_keys(b, body, p, dim);
+  for (const auto& m : registered_module_keys()) body.params[m.module] = m.read_body(b, body, p, s);
   b.finish();
   // The body must lie inside the domain.
   Point lo, hi;

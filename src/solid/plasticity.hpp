@@ -1,8 +1,8 @@
 #pragma once
 // J2 plasticity with Johnson-Cook hardening, adiabatic heating and Johnson-Cook damage
 // (Mohseni-Mofidi & Bierwisch 2020, "MMB", Sect. 2.2-2.3, Eq. 22-26).
-#include "core/scene.hpp"
 #include "core/types.hpp"
+#include "scene/scene.hpp"
 
 namespace monosph {
 

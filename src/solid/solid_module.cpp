@@ -9,6 +9,7 @@
 #include "core/sph_equations.hpp"
 #include "elasticity.hpp"
 #include "plasticity.hpp"
+#include "solid_keys.hpp"
 
 namespace monosph {
 
@@ -20,6 +21,7 @@ inline bool is_solid(std::int64_t ph) {
 
 template <int D>
 SolidModule<D>::SolidModule(Simulation<D>& sim) {
+  for (const auto& b : sim.bodies()) keys_.push_back(body_params<SolidBodyKeys>(b.params));
   auto& p = sim.particles();
   kS_ = p.add_field("deviatoric_stress", 9);
   kvm_ = p.add_field("von_mises", 1, FieldType::Real, true);
@@ -30,13 +32,13 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   kFinit_ = p.add_field("reference_deformation", D * D);
   kdis_ = p.add_field("disorder", 1, FieldType::Real, true);
   kgradv_ = p.add_field("velocity_gradient", D * D);
-  for (const auto& b : sim.bodies()) {
-    any_as_ = any_as_ || b.as_epsilon > 0;
-    any_ls_ = any_ls_ || (b.phase == kSolid && b.hg_reference == 2);
+  for (std::size_t i = 0; i < keys_.size(); ++i) {
+    any_as_ = any_as_ || sim.bodies()[i].as_epsilon > 0;
+    any_ls_ = any_ls_ || (sim.bodies()[i].phase == kSolid && keys_[i].hg_reference == 2);
   }
   if (any_ls_) kFls_ = p.add_field("fitted_deformation", D * D);
   bool any_springs = false;
-  for (const auto& b : sim.bodies()) any_springs = any_springs || (b.hg_xi > 0 && b.hg_chi < 1);
+  for (const auto& k : keys_) any_springs = any_springs || (k.hg_xi > 0 && k.hg_chi < 1);
   // Energy in the hourglass springs: part of the scheme's stored energy (total_energy probe).
   if (any_springs) khge_ = p.add_field("hourglass_energy", 1);
   for (const auto& b : sim.bodies())
@@ -47,8 +49,9 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
     const Material& m = sim.materials()[b.material];
     any_plastic_ = any_plastic_ || m.plasticity.on;
     any_damage_ = any_damage_ || m.damage.on;
-    any_erosion_ = any_erosion_ || (m.damage.on && b.erosion > 0);
-    any_self_contact_ = any_self_contact_ || b.self_contact > 0;
+    const SolidBodyKeys& k = keys_[&b - sim.bodies().data()];
+    any_erosion_ = any_erosion_ || (m.damage.on && k.erosion > 0);
+    any_self_contact_ = any_self_contact_ || k.self_contact > 0;
   }
   if (any_plastic_) {
     kep_ = p.add_field("plastic_strain", 1, FieldType::Real, true);
@@ -191,7 +194,6 @@ void SolidModule<D>::erode(Simulation<D>& sim) {
   auto ph = p.phase();
   auto bd = p.body();
   auto dmg = p.template view<double>(kdmg_);
-  const auto& bodies = sim.bodies();
   const auto& grp = sim.group();
   const auto& vol = sim.volumes();
   const double w0 = sim.kernel().w(0.0);
@@ -203,7 +205,7 @@ void SolidModule<D>::erode(Simulation<D>& sim) {
 #pragma omp parallel for reduction(+ : count) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i]) || dmg[i] < 1) continue;
-    const int mode = bodies[bd[i]].erosion;
+    const int mode = keys_[bd[i]].erosion;
     if (mode == 0) continue;
     bool remove = mode == 1;
     if (mode == 2) {
@@ -463,25 +465,26 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!eulerian(ph[i], bd[i])) continue;
     const BodyInfo& b = bodies[bd[i]];
+    const SolidBodyKeys& sk = keys_[bd[i]];
     const Material& mat = mats[mt[i]];
     // Zhang et al. 2024, Eq. 20: shear acceleration 2 zeta G / rho_i I_i (no stress divergence).
-    if (b.formulation == 2) a[i] += (2 * b.laplacian_zeta * mat.shear_modulus / rho[i]) * lap[i];
+    if (b.formulation == 2) a[i] += (2 * sk.laplacian_zeta * mat.shear_modulus / rho[i]) * lap[i];
     const double E =
         9 * mat.bulk_modulus * mat.shear_modulus / (3 * mat.bulk_modulus + mat.shear_modulus);
     const double cs = mat.sound_speed();
     const double vi = vol[i];
-    const bool hg = b.hg_xi > 0 || (b.hg_zeta > 0 && b.hg_chi > 0);
+    const bool hg = sk.hg_xi > 0 || (sk.hg_zeta > 0 && sk.hg_chi > 0);
     // Ganzenmueller's switch: a plastically deformed particle uses its yield stress for E.
-    const bool sw = b.hg_plastic_switch && ksy_ >= 0;
+    const bool sw = sk.hg_plastic_switch && ksy_ >= 0;
     const double Ei = sw && ep[i] > 0 ? sy[i] : E;
-    const double kstiff = -b.hg_xi * (1 - b.hg_chi) * vi;
-    const double kvisc = -b.hg_zeta * b.hg_chi * m[i] * cs * h;
+    const double kstiff = -sk.hg_xi * (1 - sk.hg_chi) * vi;
+    const double kvisc = -sk.hg_zeta * sk.hg_chi * m[i] * cs * h;
     if (!hg) continue;
     // MMB Eq. 31 literally: total F and the initial configuration; or F_ref and the
     // configuration of the last neighbour rebuild (`intermediate`); or the least-squares fit of
     // the initial onto the current neighbourhood (`least_squares`).
-    const bool inter = b.hg_reference == 1;
-    const auto& F = b.hg_reference == 0 ? Ftot : inter ? Fref : Fls;
+    const bool inter = sk.hg_reference == 1;
+    const auto& F = sk.hg_reference == 0 ? Ftot : inter ? Fref : Fls;
     const Mat<D> Fi = F[i];
     Vec<D> f = Vec<D>::Zero();
     double kappa = 0;   // sum_j V_j W_ij E_ij / X_ij^2: the pair spring stiffnesses / (V_i xi)
@@ -519,10 +522,10 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     a[i] += f / m[i];
     // The force is -dU/dx_i of U = sum over pairs 1/2 k_ij (eps . x_ij / r_ij)^2 with
     // k_ij = xi V_i V_j W_ij E / X_ij^2; particle i holds half of each of its pairs.
-    if (!hge.empty()) hge[i] = 0.25 * b.hg_xi * (1 - b.hg_chi) * vi * stored;
+    if (!hge.empty()) hge[i] = 0.25 * sk.hg_xi * (1 - sk.hg_chi) * vi * stored;
     // Springs k_ij = xi V_i V_j W_ij E / X_ij^2 on particle i: by Gershgorin the hourglass part of
     // the stiffness matrix has no frequency above omega^2 = 2 sum_j k_ij / m_i.
-    omega2_[i] = 2.0 * b.hg_xi * (1 - b.hg_chi) * kappa / rho[i];
+    omega2_[i] = 2.0 * sk.hg_xi * (1 - sk.hg_chi) * kappa / rho[i];
   }
   if (tl_) tl_->forces(sim, omega2_, hge);  // G15 Eq. 24 and 32
   if (any_self_contact_) self_contact(sim);
@@ -540,7 +543,6 @@ void SolidModule<D>::self_contact(Simulation<D>& sim) {
   auto ph = p.phase();
   auto bd = p.body();
   auto mt = p.material();
-  const auto& bodies = sim.bodies();
   const auto& mats = sim.materials();
   const double dp = sim.dp(), depth = D == 2 ? dp : 1.0;
   const std::size_t n = p.size();
@@ -548,7 +550,7 @@ void SolidModule<D>::self_contact(Simulation<D>& sim) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] != kSolid) continue;
-    const double dc = bodies[bd[i]].self_contact * dp;
+    const double dc = keys_[bd[i]].self_contact * dp;
     if (!(dc > 0)) continue;
     const Material& mat = mats[mt[i]];
     const double K = mat.bulk_modulus, mu = mat.shear_modulus;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/simulation.hpp"
+#include "solid/solid_keys.hpp"
 #include "total_lagrangian.hpp"
 
 namespace monosph {
@@ -43,6 +44,7 @@ class SolidModule : public Module<D> {
   TotalLagrangian<D>* total_lagrangian() { return tl_.get(); }
 
  private:
+  std::vector<SolidBodyKeys> keys_;  // per body (solid_keys.hpp)
   // Particle i belongs to a solid body of the Eulerian (MMB) formulation.
   bool eulerian(std::int64_t ph, std::int64_t body) const {
     return ph == kSolid && !(tl_ && tl_->is_tl(body));

@@ -13,7 +13,10 @@ template <int D>
 TotalLagrangian<D>::TotalLagrangian(Simulation<D>& sim, int kS, int kF, int kgradv, int kX0,
                                     int kep, int ksy)
     : kS_(kS), kF_(kF), kgradv_(kgradv), kX0_(kX0), kep_(kep), ksy_(ksy) {
-  for (const auto& b : sim.bodies()) tlb_.push_back(b.total_lagrangian ? 1 : 0);
+  for (const auto& b : sim.bodies()) {
+    tlb_.push_back(b.total_lagrangian ? 1 : 0);
+    keys_.push_back(body_params<SolidBodyKeys>(b.params));
+  }
   // Not decomposed over ranks: the reference pairs would cross rank boundaries.
   if (sim.comm().size() > 1) throw InputError("formulation: total_lagrangian runs on one rank");
   const Scene& sc = sim.scene();
@@ -295,13 +298,12 @@ void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
   auto mt = p.material();
   std::span<double> ep, sy;
   if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
-  const auto& bodies = sim.bodies();
   const auto& mats = sim.materials();
   const std::size_t ns = sid_.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    const BodyInfo& b = bodies[bd[i]];
+    const SolidBodyKeys& b = keys_[bd[i]];
     const double alpha = b.hg_xi;  // G15 alpha = MMB xi (docs/theory.md)
     const double E = mats[mt[i]].youngs_modulus();
     // G15 Sect. 4.5: a plastically deformed particle uses its yield stress in Eq. 32.

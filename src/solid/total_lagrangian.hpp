@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/simulation.hpp"
+#include "solid/solid_keys.hpp"
 
 namespace monosph {
 
@@ -44,7 +45,8 @@ class TotalLagrangian {
   std::size_t reference_neighbours(std::size_t i) const;
 
  private:
-  void build(Simulation<D>& sim);  // the reference pairs, once
+  std::vector<SolidBodyKeys> keys_;  // per body (solid_keys.hpp)
+  void build(Simulation<D>& sim);    // the reference pairs, once
   void map_slots(Simulation<D>& sim);
   // sum_j (f_j - f_i) (x) g_ij over the reference pairs of slot s (G15 Eq. 17 for f = x); f a
   // point field (positions: images reflected across the planes) or a vector field (velocities).

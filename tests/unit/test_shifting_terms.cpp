@@ -7,6 +7,7 @@
 
 #include "assemble.hpp"
 #include "core/kernel.hpp"
+#include "fluid/fluid_keys.hpp"
 #include "fluid/shifting_terms.hpp"
 #include "scene/scene_reader.hpp"
 
@@ -140,13 +141,13 @@ TEST(ShiftingTerms, TransportVelocityVanishesOnALatticeAndPullsADisplacedParticl
 
 TEST(ShiftingTerms, SceneKeys) {
   auto s = periodic_lattice("{form: transport_velocity, pressure: 400, consistent: true}");
-  EXPECT_DOUBLE_EQ(s.bodies[0].shift_pb, 400);
-  EXPECT_DOUBLE_EQ(s.bodies[0].shift_speed, 0);
-  EXPECT_TRUE(s.bodies[0].shift_consistent);
+  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(s.bodies[0].params).shift_pb, 400);
+  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(s.bodies[0].params).shift_speed, 0);
+  EXPECT_TRUE(body_params<FluidBodyKeys>(s.bodies[0].params).shift_consistent);
   auto d = periodic_lattice("{speed: 0.1}");  // the delta-plus default is unchanged
-  EXPECT_DOUBLE_EQ(d.bodies[0].shift_speed, 0.1);
-  EXPECT_DOUBLE_EQ(d.bodies[0].shift_pb, 0);
-  EXPECT_FALSE(d.bodies[0].shift_consistent);
+  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(d.bodies[0].params).shift_speed, 0.1);
+  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(d.bodies[0].params).shift_pb, 0);
+  EXPECT_FALSE(body_params<FluidBodyKeys>(d.bodies[0].params).shift_consistent);
   EXPECT_THROW(periodic_lattice("{form: transport_velocity}"), InputError);  // no pressure
   EXPECT_THROW(periodic_lattice("{form: transport_velocity, pressure: 1, speed: 1}"),
                InputError);  // speed belongs to delta_plus

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
+#include "solid/solid_keys.hpp"
 #include "study.hpp"
 
 namespace monosph {
@@ -17,20 +18,21 @@ Scene with(const std::string& variant) {
 TEST(StudyVariants, NoneTurnsOffHourglassControlAndArtificialStress) {
   Scene s = with("none");
   ASSERT_EQ(s.bodies[0].phase, "solid");
-  EXPECT_EQ(s.bodies[0].hg_xi, 0);
+  EXPECT_EQ(body_params<SolidBodyKeys>(s.bodies[0].params).hg_xi, 0);
   EXPECT_EQ(s.bodies[0].as_epsilon, 0);
 }
 
 TEST(StudyVariants, ArtificialStressReplacesHourglassControl) {
   Scene s = with("artificial_stress");
-  EXPECT_EQ(s.bodies[0].hg_xi, 0);
+  EXPECT_EQ(body_params<SolidBodyKeys>(s.bodies[0].params).hg_xi, 0);
   EXPECT_DOUBLE_EQ(s.bodies[0].as_epsilon, 0.3);
   EXPECT_DOUBLE_EQ(s.bodies[0].as_n, 4);
 }
 
 TEST(StudyVariants, HourglassKeepsTheScenesOwnControl) {
   Scene s = with("hourglass");
-  EXPECT_DOUBLE_EQ(s.bodies[0].hg_xi, 0.5);  // the plate's xi (MMB Table 2)
+  EXPECT_DOUBLE_EQ(body_params<SolidBodyKeys>(s.bodies[0].params).hg_xi,
+                   0.5);  // the plate's xi (MMB Table 2)
   EXPECT_EQ(s.bodies[0].as_epsilon, 0);
 }
 

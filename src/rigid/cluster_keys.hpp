@@ -1,0 +1,15 @@
+#pragma once
+// The cluster module's key on a body: `clusters: one/per_part` (README.md, "bodies").
+#include "scene/module_keys.hpp"
+
+namespace monosph {
+
+struct ClusterBodyKeys : BodyParams {
+  static constexpr const char* module = "clusters";
+  bool per_part = false;  // one rigid cluster per part of a union shape (else one per body)
+  nlohmann::json dump() const override { return {{"cluster_per_part", per_part}}; }
+};
+
+ModuleKeys cluster_keys();
+
+}  // namespace monosph
