@@ -24,6 +24,7 @@
 #include "output_folder.hpp"
 #include "parallel/thread_governor.hpp"
 #include "parallel/threads.hpp"
+#include "run_summary.hpp"
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -134,6 +135,98 @@ void open_profiles(Probes<D>& probes, const fs::path& out, bool restart, double 
   if (!err.empty()) throw InputError(err);
 }
 
+// When the next frame, probe row and checkpoint are due.
+struct Schedule {
+  double output, probe, checkpoint;
+};
+
+// A fresh start (fill, first forces) or the state of a checkpoint; when output is due next.
+template <int D>
+Schedule start(Simulation<D>& sim, const CheckpointMeta* restart_meta,
+               const std::string& restart_file) {
+  const Scene& scene = sim.scene();
+  Schedule next{0, 0, scene.checkpoint_every};
+  if (restart_meta) {
+    // Each rank reads its share of the file (any number of ranks).
+    read_checkpoint<D>(restart_file, sim.particles(), sim.comm().rank(), sim.comm().size());
+    sim.adopt_particles();
+    sim.set_state(restart_meta->time, restart_meta->step, restart_meta->dt);
+    auto get = [&](const char* k, double d) {
+      auto it = restart_meta->scalars.find(k);
+      return it == restart_meta->scalars.end() ? d : it->second;
+    };
+    next.output = get("next_output", 0);
+    next.probe = get("next_probe", 0);
+    next.checkpoint = get("next_checkpoint", scene.checkpoint_every);
+    sim.set_substeps(static_cast<int>(get("substeps", 1)));
+    for (const auto& m : sim.modules()) m->load_state(sim, restart_meta->scalars);
+    sim.init(true);
+  } else {
+    sim.create_particles();
+    sim.init(false);
+  }
+  return next;
+}
+
+// Output fields the scene asks for must exist.
+template <int D>
+void check_output_fields(const Particles<D>& p, const Scene& scene) {
+  for (const auto& f : scene.output_fields) {
+    if (!p.has(f)) {
+      std::string names;
+      for (const auto& ff : p.fields()) names += (names.empty() ? "" : ", ") + ff.name;
+      throw InputError("output.fields: no particle field '" + f +
+                       "' in this scene (available: " + names + ")");
+    }
+  }
+}
+
+// The output folder exists and every rank can write to it.
+void check_writable(const fs::path& out, const Comm& comm) {
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  const fs::path test_file = out / (".write-test-" + std::to_string(comm.rank()));
+  std::ofstream test(test_file);
+  const bool ok = !ec && test;
+  test.close();
+  fs::remove(test_file, ec);
+  if (comm.min(ok ? 1L : 0L) == 0)
+    throw InputError("output: cannot write to directory " + out.string());
+}
+
+// A checkpoint's metadata: time, step, scene, and when output is due next.
+template <int D>
+CheckpointMeta checkpoint_meta(Simulation<D>& sim, const Schedule& next, long probe_rows) {
+  CheckpointMeta meta;
+  meta.time = sim.time();
+  meta.step = sim.step();
+  meta.dt = sim.dt();
+  meta.scene_yaml = sim.scene().yaml;
+  meta.next_id = sim.particles().next_id();
+  meta.scalars["next_output"] = next.output;
+  meta.scalars["next_probe"] = next.probe;
+  meta.scalars["next_checkpoint"] = next.checkpoint;
+  meta.scalars["reference_end_time"] = sim.scene().reference_end_time;
+  meta.scalars["probe_rows"] = static_cast<double>(probe_rows);
+  meta.scalars["substeps"] = sim.substeps();
+  return meta;
+}
+
+// The run's size and speed (particles summed over the ranks: collective).
+template <int D>
+void measure_speed(RunResult& res, Simulation<D>& sim, long step0, double wall,
+                   double mean_threads) {
+  res.particles = static_cast<std::size_t>(sim.comm().sum(static_cast<long>(sim.owned())));
+  res.steps = sim.step() - step0;
+  res.wall_seconds = wall;
+  res.particle_steps_per_second = wall > 0 ? double(res.particles) * res.steps / wall : 0;
+  res.neighbour_builds = sim.neighbours().builds();
+  res.configuration_updates = sim.configuration_updates();
+  res.neighbour_seconds = sim.neighbours().build_seconds();
+  res.mean_threads = mean_threads;
+  res.pass_seconds = sim.pass_seconds();
+}
+
 template <int D>
 RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* restart_meta) {
   RunResult res;
@@ -148,52 +241,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     folder = std::make_unique<OutputFolder>(out, restart_meta != nullptr, Comm::world());
   Simulation<D> sim(scene);
   assemble_modules(sim);
-  double next_output = 0, next_probe = 0, next_ckpt = scene.checkpoint_every;
-  if (restart_meta) {
-    // Each rank reads its share of the file (any number of ranks).
-    read_checkpoint<D>(opt.restart, sim.particles(), sim.comm().rank(), sim.comm().size());
-    sim.adopt_particles();
-    sim.set_state(restart_meta->time, restart_meta->step, restart_meta->dt);
-    auto get = [&](const char* k, double d) {
-      auto it = restart_meta->scalars.find(k);
-      return it == restart_meta->scalars.end() ? d : it->second;
-    };
-    next_output = get("next_output", 0);
-    next_probe = get("next_probe", 0);
-    next_ckpt = get("next_checkpoint", scene.checkpoint_every);
-    sim.set_substeps(static_cast<int>(get("substeps", 1)));
-    for (const auto& m : sim.modules()) m->load_state(sim, restart_meta->scalars);
-    sim.init(true);
-  } else {
-    sim.create_particles();
-    sim.init(false);
-  }
-  // Output fields the scene asks for must exist.
+  Schedule next = start(sim, restart_meta, opt.restart);
   auto& p = sim.particles();
-  for (const auto& f : scene.output_fields) {
-    if (!p.has(f)) {
-      std::string names;
-      for (const auto& ff : p.fields()) names += (names.empty() ? "" : ", ") + ff.name;
-      throw InputError("output.fields: no particle field '" + f +
-                       "' in this scene (available: " + names + ")");
-    }
-  }
+  check_output_fields(p, scene);
   Probes<D> probes(sim);
   if (restart_meta) probes.load_state(restart_meta->scalars);  // the same tracked particles
   const Comm& comm = sim.comm();
   const bool root = comm.root();  // rank 0 writes the series, probes and summary (MPI)
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  {
-    const fs::path test_file = out / (".write-test-" + std::to_string(comm.rank()));
-    std::ofstream test(test_file);
-    const bool ok = !ec && test;
-    test.close();
-    fs::remove(test_file, ec);
-    if (comm.min(ok ? 1L : 0L) == 0)
-      throw InputError("output: cannot write to directory " + out.string());
-  }
-
+  check_writable(out, comm);
   std::unique_ptr<VtkSeries<D>> vtk;
   if (opt.write_output) {
     vtk = std::make_unique<VtkSeries<D>>(out, scene.name);
@@ -224,18 +279,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     // rebuild at the same positions still moves the solids' reference state by round-off (the
     // final checkpoint right after a periodic one).
     if (sim.step() != rebuilt_step) sim.rebuild_neighbours(), rebuilt_step = sim.step();
-    CheckpointMeta meta;
-    meta.time = sim.time();
-    meta.step = sim.step();
-    meta.dt = sim.dt();
-    meta.scene_yaml = scene.yaml;
-    meta.next_id = p.next_id();
-    meta.scalars["next_output"] = next_output;
-    meta.scalars["next_probe"] = next_probe;
-    meta.scalars["next_checkpoint"] = next_ckpt;
-    meta.scalars["reference_end_time"] = scene.reference_end_time;
-    meta.scalars["probe_rows"] = static_cast<double>(csv.rows());
-    meta.scalars["substeps"] = sim.substeps();
+    CheckpointMeta meta = checkpoint_meta(sim, next, csv.rows());
     probes.save_state(meta.scalars);
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
     write_checkpoint<D>(file, p, sim.owned(), meta, comm);
@@ -251,9 +295,9 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   const double eps = 1e-12 * scene.end_time;
   if (!restart_meta) {
     if (opt.write_output) frame();
-    next_output = scene.output_every > 0 ? scene.output_every : scene.end_time;
+    next.output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
-    next_probe = scene.probe_every;
+    next.probe = scene.probe_every;
   }
   if (!restart_meta) {  // one line at the start: solid bodies that would pass through each other
     const std::string w = untouched_bodies_warning(sim);
@@ -268,19 +312,19 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     while (sim.time() < scene.end_time - eps) {
       // Land exactly on checkpoint times so that restarts reproduce the run.
       double stop = scene.end_time;
-      if (scene.checkpoint_every > 0) stop = std::min(stop, next_ckpt);
+      if (scene.checkpoint_every > 0) stop = std::min(stop, next.checkpoint);
       sim.advance(stop);
-      if (sim.time() >= next_probe - eps) {
+      if (sim.time() >= next.probe - eps) {
         sample();
-        next_probe += scene.probe_every;
-        if (next_probe <= sim.time()) next_probe = sim.time();
+        next.probe += scene.probe_every;
+        if (next.probe <= sim.time()) next.probe = sim.time();
       }
-      if (opt.write_output && sim.time() >= next_output - eps) {
+      if (opt.write_output && sim.time() >= next.output - eps) {
         frame();
-        next_output += scene.output_every > 0 ? scene.output_every : scene.end_time;
+        next.output += scene.output_every > 0 ? scene.output_every : scene.end_time;
       }
-      if (opt.write_output && scene.checkpoint_every > 0 && sim.time() >= next_ckpt - eps) {
-        next_ckpt += scene.checkpoint_every;
+      if (opt.write_output && scene.checkpoint_every > 0 && sim.time() >= next.checkpoint - eps) {
+        next.checkpoint += scene.checkpoint_every;
         checkpoint(out / "checkpoint.h5");
       }
       progress.update(sim.time(), sim.step());
@@ -311,15 +355,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   progress.update(sim.time(), sim.step(), true);
   progress.finish();
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  res.particles = static_cast<std::size_t>(comm.sum(static_cast<long>(sim.owned())));
-  res.steps = sim.step() - step0;
-  res.wall_seconds = wall;
-  res.particle_steps_per_second = wall > 0 ? double(res.particles) * res.steps / wall : 0;
-  res.neighbour_builds = sim.neighbours().builds();
-  res.configuration_updates = sim.configuration_updates();
-  res.neighbour_seconds = sim.neighbours().build_seconds();
-  res.mean_threads = governor.mean_threads();
-  res.pass_seconds = sim.pass_seconds();
+  measure_speed(res, sim, step0, wall, governor.mean_threads());
   if (!opt.write_output) return res;
   check_csv();
   if (res.exit_code == 0) checkpoint(out / "final.h5");
@@ -327,24 +363,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   if (status == "interrupted" && ckpt_step != sim.step()) checkpoint(out / "checkpoint.h5");
   csv.close();
   // MPI figures (collective: before rank 0 goes on alone).
-  const auto* dec = sim.decomposition();
-  nlohmann::json mpi;
-  if (dec) {
-    const auto& st = dec->stats();
-    const double steps = std::max(1L, res.steps);
-    mpi["halo_bytes_per_step"] = comm.sum(st.halo_bytes) / steps;  // all ranks together
-    mpi["exchanges_per_step"] = st.exchanges / steps;
-    mpi["collectives_per_step"] = comm.collectives() / steps;
-    mpi["exchange_seconds_max"] = comm.max(st.exchange_seconds);
-    mpi["rebuild_seconds_max"] = comm.max(st.rebuild_seconds);
-    mpi["wait_seconds_max"] = comm.max(st.wait_seconds);
-    mpi["ghosts"] = comm.sum(static_cast<long>(dec->ghosts()));
-    mpi["owned_max"] = comm.max(static_cast<long>(dec->owned()));
-    mpi["peers_max"] = comm.max(st.peers);
-    mpi["rebalances"] = st.rebalances;
-    mpi["imbalance_last"] = st.imbalance;  // largest / mean work at the last rebuild
-    mpi["migrated"] = comm.sum(st.migrated);
-  }
+  const nlohmann::json mpi = mpi_summary(sim, res.steps);
   // Largest resident set of any rank (collective).
   const long peak_memory = comm.max(static_cast<long>(peak_resident_bytes()));
   // Rank 0 writes the summary alone; the others wait for it (however it ends), so that none exits
@@ -355,148 +374,8 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   } wait_for_root{comm};
   if (!root) return res;
 
-  nlohmann::json js;
-  js["scene"] = scene.name;
-  js["dimension"] = D;
-  js["particles"] = res.particles;
-  js["steps"] = sim.step();
-  js["steps_this_run"] = res.steps;
-  js["simulated_time"] = sim.time();
-  js["wall_seconds"] = wall;
-  js["particle_steps_per_second"] = res.particle_steps_per_second;
-  js["threads"] = threads;
-  js["threads_mean"] = governor.mean_threads();  // lower while other processes used the CPUs
-  js["ranks"] = comm.size();
-  if (dec) {
-    js["halo_bytes_per_step"] = mpi["halo_bytes_per_step"];
-    js["mpi"] = mpi;
-  }
-  js["status"] = status;
-  js["dp"] = scene.dp;
-  js["h"] = scene.h();
-  js["kernel"] = kernel_name(scene.kernel);
-  js["neighbour_builds"] = res.neighbour_builds;
-  js["configuration_updates"] = res.configuration_updates;
-  js["neighbour_seconds"] = res.neighbour_seconds;
-  js["pass_seconds"] = sim.pass_seconds();  // this rank's (rank 0 under MPI)
-  js["last_dt"] = sim.dt();
-  if (scene.multi_rate) js["solid_substeps"] = sim.total_substeps();  // over this run's steps
-  js["peak_memory_bytes"] = peak_memory;
-  js["output"] = (out / (scene.name + ".pvd")).string();
-  js["metrics"] = nlohmann::json::object();
-  {
-    std::vector<std::string> head;
-    std::vector<std::vector<double>> cols;
-    read_probe_table(csv_path, head, cols);
-    // The column of a probe (a vector probe: its x component, or the component named "load_y").
-    auto column = [&](const std::string& probe) -> const std::vector<double>* {
-      auto spec = std::find_if(scene.probes.begin(), scene.probes.end(),
-                               [&](const ProbeSpec& s) { return s.name == probe; });
-      std::string col =
-          spec != scene.probes.end() && (spec->type == "momentum" || spec->type == "reaction_force")
-              ? probe + "_x"
-              : probe;
-      auto it = std::find(head.begin(), head.end(), col);
-      if (it == head.end() || cols.empty()) return nullptr;
-      return &cols[it - head.begin()];
-    };
-    for (const auto& ref : scene.references) {
-      const auto* y = column(ref.probe);
-      const double value = y ? measure_series(ref.measure, cols[0], *y, ref.start) : NAN;
-      // A measure over a window (final, max, min, mean) is the reference's only once the run has
-      // simulated the time the scene gives it; before that it is "not reached", not an error.
-      const double needs = ref.needs_time(scene.reference_end_time);
-      const bool reached = sim.time() >= needs * (1 - 1e-9);
-      nlohmann::json m;
-      m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-      m["reference"] =
-          std::isfinite(ref.value) ? nlohmann::json(ref.value) : nlohmann::json(nullptr);
-      m["reached"] = reached;
-      m["needs_time"] = needs;
-      m["relative_error"] =
-          reached && std::isfinite(value) && std::isfinite(ref.value) && ref.value != 0
-              ? nlohmann::json(std::abs(value - ref.value) / std::abs(ref.value))
-              : nlohmann::json(nullptr);
-      js["metrics"][ref.name] = m;
-    }
-    // Pass criteria: a run that stopped fails all of them.
-    if (!scene.checks.empty()) {
-      bool all = true;
-      js["checks"] = nlohmann::json::object();
-      for (const auto& c : scene.checks) {
-        const auto* y = column(c.probe);
-        const double value = y ? measure_series(c.measure, cols[0], *y, c.start) : NAN;
-        const bool pass =
-            status == "completed" && std::isfinite(value) && value >= c.min && value <= c.max;
-        all = all && pass;
-        nlohmann::json m;
-        m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-        if (std::isfinite(c.min)) m["min"] = c.min;
-        if (std::isfinite(c.max)) m["max"] = c.max;
-        m["pass"] = pass;
-        js["checks"][c.name] = m;
-      }
-      js["checks_passed"] = all;
-      if (!all && res.exit_code == 0) res.exit_code = 5;
-    }
-  }
-  try {
-    write_file_atomic(out / "summary.json", js.dump(2) + "\n");
-  } catch (const OutputError&) {
-    // Without its summary a final.h5 would pass for the end of a completed run.
-    std::error_code rm;
-    if (res.exit_code == 0) fs::remove(out / "final.h5", rm);
-    throw;
-  }
-  const std::string done = fmt::format(
-      "monosph: {} — {} particles, {} steps, {:.2f} s wall, {:.3g} particle-steps/s, {}{} "
-      "threads{}",
-      status == "completed" || status == "interrupted" ? status : "stopped", res.particles,
-      res.steps, wall, res.particle_steps_per_second,
-      comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "", threads,
-      governor.changes()
-          ? fmt::format(" (mean {:.2f}: other processes were busy)", governor.mean_threads())
-          : "");
-  if (opt.quiet)  // the one line a script's log keeps: status and where the summary is
-    fmt::print(stderr, "{}; summary {}\n", done, (out / "summary.json").string());
-  if (!opt.quiet) {
-    fmt::print(stderr, "{}\n", done);
-    for (const auto& ref : scene.references) {
-      const nlohmann::json& m = js["metrics"][ref.name];
-      if (!m["reached"].get<bool>()) {
-        fmt::print(stderr,
-                   "monosph: {} not reached: its measure needs {:.6g} s simulated, the run "
-                   "reached {:.6g} s\n",
-                   ref.name, m["needs_time"].get<double>(), sim.time());
-        continue;
-      }
-      if (m["value"].is_null()) {
-        fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name,
-                   ref.probe);
-        continue;
-      }
-      if (m["reference"].is_null()) {
-        fmt::print(stderr, "monosph: {} = {:.6g} (no reference value)\n", ref.name,
-                   m["value"].get<double>());
-        continue;
-      }
-      const double v = m["value"], rv = m["reference"];
-      fmt::print(stderr, "monosph: {} = {:.6g} (reference {:.6g}, relative error {:.3e})\n",
-                 ref.name, v, rv, std::abs(v - rv) / std::abs(rv));
-    }
-    for (const auto& c : scene.checks) {
-      const nlohmann::json& m = js["checks"][c.name];
-      fmt::print(stderr, "monosph: check {} = {} ({}{}{}): {}\n", c.name,
-                 m["value"].is_null() ? std::string("not measured")
-                                      : fmt::format("{:.6g}", m["value"].get<double>()),
-                 std::isfinite(c.min) ? fmt::format(">= {:g}", c.min) : "",
-                 std::isfinite(c.min) && std::isfinite(c.max) ? ", " : "",
-                 std::isfinite(c.max) ? fmt::format("<= {:g}", c.max) : "",
-                 m["pass"].get<bool>() ? "pass" : "FAIL");
-    }
-    fmt::print(stderr, "monosph: ParaView file {}\nmonosph: summary {}\n",
-               (out / (scene.name + ".pvd")).string(), (out / "summary.json").string());
-  }
+  write_summary(sim, res, status, {threads, governor.changes() > 0, opt.quiet}, mpi, peak_memory,
+                out);
   return res;
 }
 

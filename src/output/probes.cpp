@@ -198,6 +198,117 @@ const ProfileBins& Probes<D>::profile(const std::string& name) const {
   throw std::out_of_range("no profile probe named '" + name + "'");
 }
 
+namespace {
+
+// The sample of one probe type over the owned particles i with in_body(i), reduced over the
+// ranks (the probe types in README.md, "probes").
+template <int D, class InBody>
+double count_pieces(Simulation<D>& sim, InBody in_body, int min_particles) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  const std::size_t n = sim.owned();
+  const Comm& comm = sim.comm();
+  // Connected pieces (particles closer than 1.5 dp linked) with at least min_particles
+  // particles: a body broken into segments or fragments. Positions gather on rank 0.
+  std::vector<double> local;
+  for (std::size_t i = 0; i < n; ++i)
+    if (in_body(i))
+      for (int a = 0; a < D; ++a) local.push_back(x[i][a]);
+  std::vector<std::vector<char>> send(comm.size());
+  send[0].resize(local.size() * sizeof(double));
+  if (!local.empty()) std::memcpy(send[0].data(), local.data(), send[0].size());
+  std::vector<double> all;  // filled on rank 0 only
+  for (const auto& buf : comm.exchange(send)) {
+    const std::size_t m0 = all.size();
+    all.resize(m0 + buf.size() / sizeof(double));
+    if (!buf.empty()) std::memcpy(all.data() + m0, buf.data(), buf.size());
+  }
+  long count = 0;
+  for (long c : piece_sizes(all, D, 1.5 * sim.dp())) count += c >= min_particles;
+  return static_cast<double>(comm.sum(count));
+}
+
+template <int D, class InBody>
+double penetration(Simulation<D>& sim, InBody in_body, int target) {
+  auto& p = sim.particles();
+  auto bd = p.body();
+  const std::size_t n = sim.owned();
+  const Comm& comm = sim.comm();
+  // How far a particle of `body` comes closer than dp to a particle of `target` (every solid
+  // particle without one): max(0, dp - r) over such pairs, in metres. Lattice neighbours at
+  // rest are dp apart (0); a Hertz overlap or a fluid particle pushed into the solid shows.
+  const auto& pl = sim.pairs();
+  auto ph = p.phase();
+  const double dp = sim.dp();
+  double worst = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!in_body(i)) continue;
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      if (target < 0 ? ph[j] != kSolid : bd[j] != target) continue;
+      if (bd[j] == bd[i]) continue;
+      worst = std::max(worst, dp - pl.r[k].norm());
+    }
+  }
+  return comm.max(worst);
+}
+
+template <int D, class InBody>
+double diameter(Simulation<D>& sim, InBody in_body, const ProbeSpec& s) {
+  auto& p = sim.particles();
+  auto x = p.x();
+  const std::size_t n = sim.owned();
+  const Comm& comm = sim.comm();
+  // 2 x the largest distance of a particle centre from the axis (through `point`, along
+  // `axis`) + dp: the outer diameter of a round body whatever the lattice directions.
+  double r2 = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!in_body(i)) continue;
+    double d2 = 0, along = 0;
+    for (int a = 0; a < D; ++a) along += (x[i][a] - s.point[a]) * s.axis[a];
+    for (int a = 0; a < D; ++a) {
+      const double c = x[i][a] - s.point[a] - along * s.axis[a];
+      d2 += c * c;
+    }
+    r2 = std::max(r2, d2);
+  }
+  return 2 * std::sqrt(comm.max(r2)) + sim.dp();
+}
+
+template <int D, class InBody>
+double rms_disorder(Simulation<D>& sim, InBody in_body) {
+  auto& p = sim.particles();
+  const std::size_t n = sim.owned();
+  const Comm& comm = sim.comm();
+  // RMS over the (solid) particles of the per-particle disorder, in dp
+  auto dis = p.template view<double>("disorder");
+  auto ph = p.phase();
+  double sum = 0;
+  std::size_t cnt = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (in_body(i) && ph[i] == kSolid) sum += dis[i] * dis[i], ++cnt;
+  sum = comm.sum(sum);
+  cnt = comm.sum(static_cast<long>(cnt));
+  return cnt ? std::sqrt(sum / cnt) : 0.0;
+}
+
+template <int D, class InBody, class Value>
+double value_at(Simulation<D>& sim, InBody in_body, Value value, const Point& point) {
+  auto x = sim.particles().x();
+  const std::size_t n = sim.owned();
+  double best = std::numeric_limits<double>::infinity(), val = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!in_body(i)) continue;
+    double d2 = 0;
+    for (int a = 0; a < D; ++a) d2 += (x[i][a] - point[a]) * (x[i][a] - point[a]);
+    if (d2 < best) best = d2, val = value(i);
+  }
+  sim.comm().nearest(best, val);
+  return val;
+}
+
+}  // namespace
+
 template <int D>
 std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
   auto& p = sim.particles();
@@ -270,16 +381,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
         if (in_body(i)) e += elastic(i);
       out.push_back(comm.sum(e));
     } else if (s.type == "disorder") {
-      // RMS over the (solid) particles of the per-particle disorder, in dp
-      auto dis = p.template view<double>("disorder");
-      auto ph = p.phase();
-      double sum = 0;
-      std::size_t cnt = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (in_body(i) && ph[i] == kSolid) sum += dis[i] * dis[i], ++cnt;
-      sum = comm.sum(sum);
-      cnt = comm.sum(static_cast<long>(cnt));
-      out.push_back(cnt ? std::sqrt(sum / cnt) : 0.0);
+      out.push_back(rms_disorder(sim, in_body));
     } else if (s.type == "total_mass") {
       double e = 0;
       for (std::size_t i = 0; i < n; ++i)
@@ -304,20 +406,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
     } else if (s.type == "min_distance") {
       out.push_back(comm.min(sim.min_distance()) / sim.dp());
     } else if (s.type == "diameter") {
-      // 2 x the largest distance of a particle centre from the axis (through `point`, along
-      // `axis`) + dp: the outer diameter of a round body whatever the lattice directions.
-      double r2 = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!in_body(i)) continue;
-        double d2 = 0, along = 0;
-        for (int a = 0; a < D; ++a) along += (x[i][a] - s.point[a]) * s.axis[a];
-        for (int a = 0; a < D; ++a) {
-          const double c = x[i][a] - s.point[a] - along * s.axis[a];
-          d2 += c * c;
-        }
-        r2 = std::max(r2, d2);
-      }
-      out.push_back(2 * std::sqrt(comm.max(r2)) + sim.dp());
+      out.push_back(diameter(sim, in_body, s));
     } else if (s.type == "extent") {  // max - min of a component; + dp for position (outer faces)
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (std::size_t i = 0; i < n; ++i)
@@ -341,16 +430,8 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       }
       sum = comm.sum(sum), vol = comm.sum(vol);
       out.push_back(s.type == "mean" ? sum / vol : sum);
-    } else if (s.type == "value_at") {
-      double best = std::numeric_limits<double>::infinity(), val = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!in_body(i)) continue;
-        double d2 = 0;
-        for (int a = 0; a < D; ++a) d2 += (x[i][a] - s.point[a]) * (x[i][a] - s.point[a]);
-        if (d2 < best) best = d2, val = value(i);
-      }
-      comm.nearest(best, val);
-      out.push_back(val);
+    } else if (s.type == "value_at") {  // the value of the particle nearest to `point`
+      out.push_back(value_at(sim, in_body, value, s.point));
     } else if (s.type == "tracked") {
       auto ids = p.id();
       double val = 0, found = 0;
@@ -359,24 +440,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       val = comm.sum(val), found = comm.sum(found);  // one owner
       out.push_back(found > 0 ? val : std::numeric_limits<double>::quiet_NaN());
     } else if (s.type == "pieces") {
-      // Connected pieces (particles closer than 1.5 dp linked) with at least min_particles
-      // particles: a body broken into segments or fragments. Positions gather on rank 0.
-      std::vector<double> local;
-      for (std::size_t i = 0; i < n; ++i)
-        if (in_body(i))
-          for (int a = 0; a < D; ++a) local.push_back(x[i][a]);
-      std::vector<std::vector<char>> send(comm.size());
-      send[0].resize(local.size() * sizeof(double));
-      if (!local.empty()) std::memcpy(send[0].data(), local.data(), send[0].size());
-      std::vector<double> all;  // filled on rank 0 only
-      for (const auto& buf : comm.exchange(send)) {
-        const std::size_t m0 = all.size();
-        all.resize(m0 + buf.size() / sizeof(double));
-        if (!buf.empty()) std::memcpy(all.data() + m0, buf.data(), buf.size());
-      }
-      long count = 0;
-      for (long c : piece_sizes(all, D, 1.5 * sim.dp())) count += c >= s.min_particles;
-      out.push_back(static_cast<double>(comm.sum(count)));
+      out.push_back(count_pieces(sim, in_body, s.min_particles));
     } else if (s.type == "wall_pressure") {  // mean interpolated pressure over the sensor
       out.push_back(it->wall->sample(sim));
     } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
@@ -388,23 +452,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
     } else if (s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) out.push_back(sim.reactions()[it->bc][a]);
     } else if (s.type == "penetration") {
-      // How far a particle of `body` comes closer than dp to a particle of `target` (every solid
-      // particle without one): max(0, dp - r) over such pairs, in metres. Lattice neighbours at
-      // rest are dp apart (0); a Hertz overlap or a fluid particle pushed into the solid shows.
-      const auto& pl = sim.pairs();
-      auto ph = p.phase();
-      const double dp = sim.dp();
-      double worst = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!in_body(i)) continue;
-        for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
-          const int j = pl.j[k];
-          if (it->target < 0 ? ph[j] != kSolid : bd[j] != it->target) continue;
-          if (bd[j] == bd[i]) continue;
-          worst = std::max(worst, dp - pl.r[k].norm());
-        }
-      }
-      out.push_back(comm.max(worst));
+      out.push_back(penetration(sim, in_body, it->target));
     }
   }
   for (auto& pr : profiles_) pr->sample(sim);
