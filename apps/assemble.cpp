@@ -8,6 +8,8 @@
 #include "coupling/solid_contact_module.hpp"
 #include "fluid/fluid_keys.hpp"
 #include "fluid/fluid_module.hpp"
+#include "heat/heat_keys.hpp"
+#include "heat/heat_module.hpp"
 #include "rigid/cluster_keys.hpp"
 #include "rigid/cluster_module.hpp"
 #include "rigid/rigid_surface_module.hpp"
@@ -21,6 +23,7 @@ void register_modules() {
   register_module_keys(fluid_keys());
   register_module_keys(solid_keys());
   register_module_keys(cluster_keys());
+  register_module_keys(heat_keys());
 }
 
 template <int D>
@@ -53,6 +56,7 @@ void assemble_modules(Simulation<D>& sim) {
   if (enabled("contact")) sim.add_module(std::make_unique<ContactModule<D>>(sim));
   if (enabled("solid_contact")) sim.add_module(std::make_unique<SolidContactModule<D>>(sim));
   if (enabled("lubrication")) sim.add_module(std::make_unique<LubricationModule<D>>(sim));
+  if (HeatModule<D>::needed(sim)) sim.add_module(std::make_unique<HeatModule<D>>(sim));
   // Last: it sums every force its particles received (fluid, contact, surfaces, body force).
   if (enabled("clusters")) sim.add_module(std::make_unique<ClusterModule<D>>(sim));
 }

@@ -91,6 +91,115 @@ std::vector<std::string> stabilisation_overrides(const std::string& scene_file,
   return sets;
 }
 
+namespace {
+
+// The index of the --against key among the varied keys (-1 without --against); its values must
+// be numbers.
+int against_axis(const std::string& key, const std::vector<Axis>& axes) {
+  if (key.empty()) return -1;
+  int against = -1;
+  for (std::size_t a = 0; a < axes.size(); ++a)
+    if (axes[a].key == key) against = static_cast<int>(a);
+  if (against < 0) throw InputError("study: --against " + key + " is not one of the --vary keys");
+  for (const auto& v : axes[against].values) {
+    std::size_t used = 0;
+    try {
+      std::stod(v, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != v.size() || v.empty())
+      throw InputError("study: --against " + key + ": value '" + v + "' is not a number");
+  }
+  return against;
+}
+
+// study.csv: one row per run.
+void write_study_csv(const fs::path& out, const std::vector<Axis>& axes,
+                     const std::vector<Run>& runs, const std::vector<std::string>& metrics) {
+  std::ofstream csv(out / "study.csv");
+  for (const auto& a : axes) csv << csv_escape(a.key) << ",";
+  csv << "particles,steps,wall_seconds,particle_steps_per_second,status";
+  for (const auto& m : metrics) csv << "," << m << "_value," << m << "_relative_error";
+  csv << "\n";
+  for (const auto& r : runs) {
+    for (const auto& v : r.values) csv << csv_escape(v) << ",";
+    const auto& s = r.summary;
+    const bool ok = s.is_object();
+    csv << (ok ? s.value("particles", 0L) : 0) << "," << (ok ? s.value("steps", 0L) : 0) << ","
+        << fmt::format("{:.6g}", ok ? s.value("wall_seconds", 0.0) : NAN) << ","
+        << fmt::format("{:.6g}", ok ? s.value("particle_steps_per_second", 0.0) : NAN) << ","
+        << csv_escape(ok ? s.value("status", std::string("?")) : r.output);
+    for (const auto& m : metrics) {
+      const bool has = ok && s["metrics"].contains(m);
+      auto num = [&](const char* f) {
+        return has && !s["metrics"][m][f].is_null()
+                   ? fmt::format("{:.9g}", s["metrics"][m][f].get<double>())
+                   : std::string("");
+      };
+      csv << "," << num("value") << "," << num("relative_error");
+    }
+    csv << "\n";
+  }
+  if (!csv) throw InputError("study: cannot write " + (out / "study.csv").string());
+}
+
+// study.md: the same as a table.
+void write_study_md(const fs::path& out, const std::string& name, const std::vector<Axis>& axes,
+                    const std::vector<Run>& runs, const std::vector<std::string>& metrics) {
+  std::ofstream md(out / "study.md");
+  md << "# Study of " << name << "\n\n|";
+  for (const auto& a : axes) md << " " << a.key << " |";
+  md << " particles | wall [s] | particle-steps/s |";
+  for (const auto& m : metrics) md << " " << m << " | error |";
+  md << " status |\n|";
+  for (std::size_t c = 0; c < axes.size() + 3 + 2 * metrics.size() + 1; ++c) md << "---|";
+  md << "\n";
+  for (const auto& r : runs) {
+    md << "|";
+    for (const auto& v : r.values) md << " " << v << " |";
+    const auto& s = r.summary;
+    const bool ok = s.is_object();
+    md << " " << (ok ? s.value("particles", 0L) : 0) << " | "
+       << fmt::format("{:.2f}", ok ? s.value("wall_seconds", 0.0) : NAN) << " | "
+       << fmt::format("{:.3g}", ok ? s.value("particle_steps_per_second", 0.0) : NAN) << " |";
+    for (const auto& m : metrics) {
+      const bool has = ok && s["metrics"].contains(m) && !s["metrics"][m]["value"].is_null();
+      md << (has ? fmt::format(" {:.6g} | {:.2e} |", s["metrics"][m]["value"].get<double>(),
+                               s["metrics"][m]["relative_error"].is_null()
+                                   ? NAN
+                                   : s["metrics"][m]["relative_error"].get<double>())
+                 : std::string(" – | – |"));
+    }
+    md << " " << (ok ? s.value("status", std::string("?")) : r.output) << " |\n";
+  }
+}
+
+// study.gp: the metric (or its error) against wall time, log-log; with --against, against that key.
+void write_study_gp(const fs::path& out, const std::string& name, const std::string& metric,
+                    const std::string& against, bool plot_value, std::size_t ncurves) {
+  std::ofstream gp(out / "study.gp");
+  if (!against.empty())  // linear axes: the value against the varied key
+    gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
+       << "set xlabel '" << against << "'\nset ylabel '" << metric << "'\n"
+       << "set title '" << name << ": " << metric << " against " << against
+       << "'\nset key outside\nset grid\nset yrange [0:*]\nplot for [i=0:"
+       << (ncurves == 0 ? 0 : ncurves - 1)
+       << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1)\n";
+  else
+    gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
+       << "set logscale xy\n"
+       << "set xlabel 'wall time [s]'\nset ylabel '" << (plot_value ? "" : "relative error of ")
+       << metric << "'\n"
+       << "set title '" << name << ": " << (plot_value ? metric : "error")
+       << " against run time'\nset key outside\n"
+       << "set grid\nplot for [i=0:" << (ncurves == 0 ? 0 : ncurves - 1)
+       << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1), \\\n"
+       << "     for [i=0:" << (ncurves == 0 ? 0 : ncurves - 1)
+       << "] 'study.dat' index i using 1:2:3 with labels offset 1,0.7 notitle\n";
+}
+
+}  // namespace
+
 int run_study(const StudyOptions& opt) {
   if (opt.scene.empty()) throw InputError("study: give a scene file");
   if (opt.vary.empty()) throw InputError("study: give at least one --vary key=v1,v2,...");
@@ -99,22 +208,7 @@ int run_study(const StudyOptions& opt) {
   std::vector<Axis> axes;
   for (const auto& v : opt.vary) axes.push_back(parse_vary(v));
   // --against KEY: the metric's value against that varied key, one curve per other combination.
-  int against = -1;
-  if (!opt.against.empty()) {
-    for (std::size_t a = 0; a < axes.size(); ++a)
-      if (axes[a].key == opt.against) against = static_cast<int>(a);
-    if (against < 0)
-      throw InputError("study: --against " + opt.against + " is not one of the --vary keys");
-    for (const auto& v : axes[against].values) {
-      std::size_t used = 0;
-      try {
-        std::stod(v, &used);
-      } catch (const std::exception&) {
-      }
-      if (used != v.size() || v.empty())
-        throw InputError("study: --against " + opt.against + ": value '" + v + "' is not a number");
-    }
-  }
+  const int against = against_axis(opt.against, axes);
   const bool plot_value = opt.plot_value || against >= 0;
   std::string metric = opt.metric;
   if (metric.empty() && !base.references.empty()) metric = base.references.front().name;
@@ -196,62 +290,9 @@ int run_study(const StudyOptions& opt) {
   // study.csv: one row per run.
   std::vector<std::string> metrics;
   for (const auto& ref : base.references) metrics.push_back(ref.name);
-  {
-    std::ofstream csv(out / "study.csv");
-    for (const auto& a : axes) csv << csv_escape(a.key) << ",";
-    csv << "particles,steps,wall_seconds,particle_steps_per_second,status";
-    for (const auto& m : metrics) csv << "," << m << "_value," << m << "_relative_error";
-    csv << "\n";
-    for (const auto& r : runs) {
-      for (const auto& v : r.values) csv << csv_escape(v) << ",";
-      const auto& s = r.summary;
-      const bool ok = s.is_object();
-      csv << (ok ? s.value("particles", 0L) : 0) << "," << (ok ? s.value("steps", 0L) : 0) << ","
-          << fmt::format("{:.6g}", ok ? s.value("wall_seconds", 0.0) : NAN) << ","
-          << fmt::format("{:.6g}", ok ? s.value("particle_steps_per_second", 0.0) : NAN) << ","
-          << csv_escape(ok ? s.value("status", std::string("?")) : r.output);
-      for (const auto& m : metrics) {
-        const bool has = ok && s["metrics"].contains(m);
-        auto num = [&](const char* f) {
-          return has && !s["metrics"][m][f].is_null()
-                     ? fmt::format("{:.9g}", s["metrics"][m][f].get<double>())
-                     : std::string("");
-        };
-        csv << "," << num("value") << "," << num("relative_error");
-      }
-      csv << "\n";
-    }
-    if (!csv) throw InputError("study: cannot write " + (out / "study.csv").string());
-  }
+  write_study_csv(out, axes, runs, metrics);
   // study.md: the same as a table.
-  {
-    std::ofstream md(out / "study.md");
-    md << "# Study of " << base.name << "\n\n|";
-    for (const auto& a : axes) md << " " << a.key << " |";
-    md << " particles | wall [s] | particle-steps/s |";
-    for (const auto& m : metrics) md << " " << m << " | error |";
-    md << " status |\n|";
-    for (std::size_t c = 0; c < axes.size() + 3 + 2 * metrics.size() + 1; ++c) md << "---|";
-    md << "\n";
-    for (const auto& r : runs) {
-      md << "|";
-      for (const auto& v : r.values) md << " " << v << " |";
-      const auto& s = r.summary;
-      const bool ok = s.is_object();
-      md << " " << (ok ? s.value("particles", 0L) : 0) << " | "
-         << fmt::format("{:.2f}", ok ? s.value("wall_seconds", 0.0) : NAN) << " | "
-         << fmt::format("{:.3g}", ok ? s.value("particle_steps_per_second", 0.0) : NAN) << " |";
-      for (const auto& m : metrics) {
-        const bool has = ok && s["metrics"].contains(m) && !s["metrics"][m]["value"].is_null();
-        md << (has ? fmt::format(" {:.6g} | {:.2e} |", s["metrics"][m]["value"].get<double>(),
-                                 s["metrics"][m]["relative_error"].is_null()
-                                     ? NAN
-                                     : s["metrics"][m]["relative_error"].get<double>())
-                   : std::string(" – | – |"));
-      }
-      md << " " << (ok ? s.value("status", std::string("?")) : r.output) << " |\n";
-    }
-  }
+  write_study_md(out, base.name, axes, runs, metrics);
   // study.png: error against wall time, log-log, one curve per variant of the axes after the
   // first (the first axis, usually dp, runs along each curve).
   bool all_ok = true;
@@ -290,27 +331,7 @@ int run_study(const StudyOptions& opt) {
       dat << "\n\n";
     }
   }
-  {
-    std::ofstream gp(out / "study.gp");
-    if (against >= 0)  // linear axes: the value against the varied key
-      gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
-         << "set xlabel '" << opt.against << "'\nset ylabel '" << metric << "'\n"
-         << "set title '" << base.name << ": " << metric << " against " << opt.against
-         << "'\nset key outside\nset grid\nset yrange [0:*]\nplot for [i=0:"
-         << (curves.empty() ? 0 : curves.size() - 1)
-         << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1)\n";
-    else
-      gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'study.png'\n"
-         << "set logscale xy\n"
-         << "set xlabel 'wall time [s]'\nset ylabel '" << (plot_value ? "" : "relative error of ")
-         << metric << "'\n"
-         << "set title '" << base.name << ": " << (plot_value ? metric : "error")
-         << " against run time'\nset key outside\n"
-         << "set grid\nplot for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
-         << "] 'study.dat' index i using 1:2 with linespoints title columnheader(1), \\\n"
-         << "     for [i=0:" << (curves.empty() ? 0 : curves.size() - 1)
-         << "] 'study.dat' index i using 1:2:3 with labels offset 1,0.7 notitle\n";
-  }
+  write_study_gp(out, base.name, metric, opt.against, plot_value, curves.size());
   if (curves.empty()) {
     fmt::print("study: no run measured {}: no plot (study.csv, study.md)\n", metric);
   } else if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {

@@ -65,6 +65,30 @@ void Simulation<D>::create_particles() {
   for (auto& m : modules_) m->on_create(*this);
 }
 
+namespace {
+
+// Jitter draws dim numbers in [-1, 1] per accepted node in lattice order, kept or not (so that
+// a rank's nodes get the serial run's numbers); returns those of the nodes `ids` (ascending).
+std::vector<double> jitter_draws(unsigned seed, int dim, std::int64_t accepted,
+                                 const std::vector<std::int64_t>& ids) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  std::vector<double> jit;
+  jit.reserve(ids.size() * dim);
+  std::size_t q = 0;
+  for (std::int64_t n = 0; n < accepted; ++n) {
+    const bool keep = q < ids.size() && ids[q] == n;
+    for (int a = 0; a < dim; ++a) {
+      const double u = uni(rng);
+      if (keep) jit.push_back(u);
+    }
+    if (keep) ++q;
+  }
+  return jit;
+}
+
+}  // namespace
+
 template <int D>
 void Simulation<D>::fill_bodies() {
   const double dp = scene_.dp;
@@ -166,22 +190,8 @@ void Simulation<D>::fill_bodies() {
     if (accepted == 0)
       throw InputError("bodies[" + std::to_string(b) + "] (" + body.name +
                        ").shape: contains no lattice node at dp = " + fmt::format("{:g}", dp));
-    // Jitter draws D numbers per accepted node in lattice order, kept or not.
-    std::mt19937 rng(body.seed);
-    std::uniform_real_distribution<double> uni(-1.0, 1.0);
-    std::vector<double> jit;
-    if (body.jitter != 0) {
-      jit.reserve(pts.size() * D);
-      std::size_t q = 0;
-      for (std::int64_t n = 0; n < accepted; ++n) {
-        const bool keep = q < ids.size() && ids[q] == n;
-        for (int a = 0; a < D; ++a) {
-          const double u = uni(rng);
-          if (keep) jit.push_back(u);
-        }
-        if (keep) ++q;
-      }
-    }
+    const std::vector<double> jit =
+        body.jitter != 0 ? jitter_draws(body.seed, D, accepted, ids) : std::vector<double>{};
     const Material& mat = scene_.materials[body.material];
     Expression rho_ex, vel_ex[3];
     if (!body.density_expr.empty())

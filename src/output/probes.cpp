@@ -204,8 +204,7 @@ namespace {
 // ranks (the probe types in README.md, "probes").
 template <int D, class InBody>
 double count_pieces(Simulation<D>& sim, InBody in_body, int min_particles) {
-  auto& p = sim.particles();
-  auto x = p.x();
+  auto x = sim.particles().x();
   const std::size_t n = sim.owned();
   const Comm& comm = sim.comm();
   // Connected pieces (particles closer than 1.5 dp linked) with at least min_particles
@@ -255,8 +254,7 @@ double penetration(Simulation<D>& sim, InBody in_body, int target) {
 
 template <int D, class InBody>
 double diameter(Simulation<D>& sim, InBody in_body, const ProbeSpec& s) {
-  auto& p = sim.particles();
-  auto x = p.x();
+  auto x = sim.particles().x();
   const std::size_t n = sim.owned();
   const Comm& comm = sim.comm();
   // 2 x the largest distance of a particle centre from the axis (through `point`, along

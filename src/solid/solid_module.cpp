@@ -41,11 +41,10 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   for (const auto& k : keys_) any_springs = any_springs || (k.hg_xi > 0 && k.hg_chi < 1);
   // Energy in the hourglass springs: part of the scheme's stored energy (total_energy probe).
   if (any_springs) khge_ = p.add_field("hourglass_energy", 1);
-  for (const auto& b : sim.bodies())
-    if (b.phase == kSolid && b.formulation == 2 && klap_ < 0)
-      klap_ = p.add_field("shear_laplacian_integral", D);  // Zhang et al. 2024, Eq. 20
   for (const auto& b : sim.bodies()) {
     if (b.phase != kSolid) continue;
+    if (b.formulation == 2 && klap_ < 0)  // Zhang et al. 2024, Eq. 20
+      klap_ = p.add_field("shear_laplacian_integral", D);
     const Material& m = sim.materials()[b.material];
     any_plastic_ = any_plastic_ || m.plasticity.on;
     any_damage_ = any_damage_ || m.damage.on;
