@@ -56,7 +56,7 @@ TEST(Heat, SineModeDecaysAtTheAnalyticRate) {
   const double measured = set_or_measure(false);
   std::printf("amplitude %.6f, analytic %.6f (t = %.3g s, %ld steps)\n", measured, expected,
               sim->time(), sim->step());
-  EXPECT_LT(measured, 0.7 * 10);  // the mode has decayed
+  EXPECT_LT(measured, 0.7 * 10);                // the mode has decayed
   EXPECT_NEAR(measured / expected, 1.0, 0.01);  // measured 1.0015
 }
 
