@@ -7,7 +7,14 @@ namespace monosph {
 
 template <int D>
 HeatModule<D>::HeatModule(Simulation<D>& sim) {
-  for (const auto& b : sim.bodies()) k_.push_back(body_params<HeatBodyKeys>(b.params).conductivity);
+  // Explicit diffusion is stable for dt below about 0.25 rho c h^2 / k; 0.1 leaves a margin.
+  const double h = sim.kernel().h();
+  for (const auto& b : sim.bodies()) {
+    k_.push_back(body_params<HeatBodyKeys>(b.params).conductivity);
+    const Material& mat = sim.materials()[b.material];
+    if (k_.back() > 0)
+      max_dt_ = std::min(max_dt_, 0.1 * mat.density * mat.heat_capacity * h * h / k_.back());
+  }
   auto& p = sim.particles();
   kT_ = p.add_field("temperature", 1, FieldType::Real, true);  // the solid module's, if it has it
   kdT_ = p.add_field("conduction_rate", 1, FieldType::Real, true);  // dT/dt by conduction, K/s
@@ -21,8 +28,7 @@ bool HeatModule<D>::needed(const Simulation<D>& sim) {
   });
 }
 
-// The initial temperature: the body's, else the Johnson-Cook reference, else 293.15 K (as the
-// solid module sets it for plastic bodies).
+// The initial temperature (Material::initial_temperature, as the solid module sets it).
 template <int D>
 void HeatModule<D>::on_create(Simulation<D>& sim) {
   auto& p = sim.particles();
@@ -30,8 +36,7 @@ void HeatModule<D>::on_create(Simulation<D>& sim) {
   auto bd = p.body();
   for (std::size_t i = 0; i < p.size(); ++i) {
     const BodyInfo& b = sim.bodies()[bd[i]];
-    const JohnsonCook& jc = sim.materials()[b.material].plasticity;
-    T[i] = b.temperature > 0 ? b.temperature : jc.on ? jc.T_ref : 293.15;
+    T[i] = sim.materials()[b.material].initial_temperature(b.temperature);
   }
 }
 
@@ -77,17 +82,9 @@ void HeatModule<D>::drift(Simulation<D>& sim, double dt) {
   for (std::size_t i = 0; i < n; ++i) T[i] += dt * dT[i];
 }
 
-// Explicit diffusion is stable for dt below about 0.25 rho c h^2 / k; 0.1 leaves a margin.
 template <int D>
-double HeatModule<D>::max_dt(Simulation<D>& sim) {
-  double dt = std::numeric_limits<double>::infinity();
-  const double h = sim.kernel().h();
-  for (const auto& b : sim.bodies()) {
-    const double k = body_params<HeatBodyKeys>(b.params).conductivity;
-    const Material& mat = sim.materials()[b.material];
-    if (k > 0) dt = std::min(dt, 0.1 * mat.density * mat.heat_capacity * h * h / k);
-  }
-  return dt;
+double HeatModule<D>::max_dt(Simulation<D>&) {
+  return max_dt_;
 }
 
 template class HeatModule<2>;

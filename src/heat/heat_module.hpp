@@ -2,6 +2,7 @@
 // Heat conduction in solid and fluid bodies (`heat_conduction: {conductivity: k}`): the SPH
 // conduction term of Cleary & Monaghan 1999 on the `temperature` field, which the solid module's
 // adiabatic heating (MMB Eq. 24) and Johnson-Cook softening share.
+#include <limits>
 #include <vector>
 
 #include "core/simulation.hpp"
@@ -23,8 +24,9 @@ class HeatModule : public Module<D> {
   static bool needed(const Simulation<D>& sim);
 
  private:
-  std::vector<double> k_;   // conductivity per body (0: none)
-  int kT_ = -1, kdT_ = -1;  // temperature, its conduction rate
+  std::vector<double> k_;                                    // conductivity per body (0: none)
+  double max_dt_ = std::numeric_limits<double>::infinity();  // diffusion limit (constant)
+  int kT_ = -1, kdT_ = -1;                                   // temperature, its conduction rate
 };
 
 }  // namespace monosph

@@ -71,6 +71,11 @@ struct Material {
   }
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
+  // A body's initial temperature: `given` (initial.temperature) when set, else the Johnson-Cook
+  // reference temperature, else 293.15 K.
+  double initial_temperature(double given) const {
+    return given > 0 ? given : plasticity.on ? plasticity.T_ref : 293.15;
+  }
   double youngs_modulus() const {
     return 9 * bulk_modulus * shear_modulus / (3 * bulk_modulus + shear_modulus);
   }

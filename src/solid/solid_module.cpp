@@ -92,9 +92,9 @@ void SolidModule<D>::on_create(Simulation<D>& sim) {
   const auto& bodies = sim.bodies();
   for (std::size_t i = 0; i < p.size(); ++i) {
     const BodyInfo& b = bodies[bd[i]];
-    const JohnsonCook& jc = sim.materials()[b.material].plasticity;
-    T[i] = b.temperature > 0 ? b.temperature : jc.on ? jc.T_ref : 293.15;
-    sy[i] = jc.on ? jc_yield(jc, 0, 0, T[i]) : 0;
+    const Material& mat = sim.materials()[b.material];
+    T[i] = mat.initial_temperature(b.temperature);
+    sy[i] = mat.plasticity.on ? jc_yield(mat.plasticity, 0, 0, T[i]) : 0;
   }
 }
 
