@@ -4,6 +4,7 @@
 
 #include "core/sph_equations.hpp"
 #include "coupling/contact_module.hpp"
+#include "coupling/coupling_keys.hpp"
 #include "coupling/lubrication_module.hpp"
 #include "coupling/solid_contact_module.hpp"
 #include "fluid/fluid_keys.hpp"
@@ -18,12 +19,15 @@
 
 namespace monosph {
 
-// The body keys each module reads (in this order: the order of their messages).
+// The keys each module reads (in this order: the order of their messages).
 void register_modules() {
   register_module_keys(fluid_keys());
   register_module_keys(solid_keys());
   register_module_keys(cluster_keys());
   register_module_keys(heat_keys());
+  register_module_keys(contact_keys());
+  register_module_keys(lubrication_keys());
+  register_module_keys(solid_contact_keys());
 }
 
 template <int D>

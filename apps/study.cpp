@@ -82,7 +82,7 @@ std::vector<std::string> stabilisation_overrides(const std::string& scene_file,
       sets.push_back(p + "artificial_stress={epsilon: 0.3, n: 4}");
     } else {
       // The scene's own hourglass control, or stiffness-based xi = 0.5 (MMB Table 2).
-      if (!(body_params<SolidBodyKeys>(b.params).hg_xi > 0))
+      if (!(module_params<SolidBodyKeys>(b.params).hg_xi > 0))
         sets.push_back(p + "hourglass={xi: 0.5}");
       sets.push_back(p + "artificial_stress={epsilon: 0}");
     }

@@ -13,7 +13,8 @@ template <int D>
 std::string untouched_bodies_warning(Simulation<D>& sim) {
   const auto& bodies = sim.bodies();
   const std::size_t nb = bodies.size();
-  if (sim.scene().solid_contact.on) return "";
+  const auto& mods = sim.scene().modules;  // bodies in contact meet without the SPH equations
+  if (std::find(mods.begin(), mods.end(), "solid_contact") != mods.end()) return "";
   // Per body: -lo (D), hi (D), largest speed; reduced with max over the ranks.
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> r(nb * (2 * D + 1), -inf);

@@ -95,7 +95,7 @@ struct BodyInfo {
                   // -3 rigid)
   std::array<double, 3> body_force{};  // acceleration on this body (the scene's unless given)
   double damping = 0;                  // mass-proportional damping rate [1/s]
-  BodyParamMap params{};               // each module's parameters (scene/module_keys.hpp)
+  ParamMap params{};                   // each module's parameters (scene/module_keys.hpp)
 };
 
 // Wall time of each pass of a step, summed over the run (the slowest pass shows in summary.json).

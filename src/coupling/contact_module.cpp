@@ -28,7 +28,7 @@ ContactModule<D>::ContactModule(Simulation<D>& sim) {
   kcl_ = p.add_field("cluster", 1, FieldType::Int, true);
   kcf_ = p.add_field("contact_force", D, FieldType::Real, true);  // per depth in 2D
   p.set_meaning({kcf_}, ~phase_bit(kFluid));
-  spec_ = sim.scene().contact;
+  spec_ = module_params<ContactSpec>(sim.scene().params);
   hertz_ = spec_.law == "hertz";
   dc_ = spec_.distance * sim.dp();
   depth_ = D == 2 ? sim.dp() : 1.0;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/simulation.hpp"
+#include "coupling/coupling_keys.hpp"
 
 namespace monosph {
 

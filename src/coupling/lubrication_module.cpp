@@ -19,7 +19,7 @@ bool film_partner(std::int64_t phase) {
 
 template <int D>
 LubricationModule<D>::LubricationModule(Simulation<D>& sim) {
-  const auto& spec = sim.scene().lubrication;
+  const auto& spec = module_params<LubricationSpec>(sim.scene().params);
   mu_ = spec.viscosity;
   hc_ = spec.cutoff * sim.dp();
   hmin_ = spec.min_gap * sim.dp();

@@ -25,7 +25,7 @@ SolidContactModule<D>::SolidContactModule(Simulation<D>& sim) {
   auto& p = sim.particles();
   kcf_ = p.add_field("solid_contact_force", D, FieldType::Real, true);  // per depth in 2D
   p.set_meaning({kcf_}, phase_bit(kSolid));
-  spec_ = sim.scene().solid_contact;
+  spec_ = module_params<SolidContactSpec>(sim.scene().params);
   dc_ = spec_.distance * sim.dp();
   depth_ = D == 2 ? sim.dp() : 1.0;  // 2D: per metre of depth, t_z = dp (equations.md Sect. 0)
   const auto& mats = sim.materials();

@@ -1,5 +1,6 @@
 #include "fluid/fluid_keys.hpp"
 
+#include "fluid/fluid_material.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
 
@@ -48,6 +49,22 @@ void read_walls(MapReader& b, const BodySpec& body, const std::string& p, FluidB
   }
 }
 
+// The material keys of the fluid EOS: cavitation_pressure, background_pressure.
+std::shared_ptr<const ModuleParams> read_fluid_material(MapReader& r) {
+  auto f = std::make_shared<FluidMaterial>();
+  if (r.has("cavitation_pressure")) {
+    f->cavitation_pressure = r.number("cavitation_pressure");
+    if (!(f->cavitation_pressure <= 0))
+      scene_error(r.at("cavitation_pressure"),
+                  "must be <= 0 (a gauge pressure: the tension the liquid bears)");
+  } else {
+    r.optional("cavitation_pressure");
+  }
+  // Fluids without a free surface (Morris et al. 1997).
+  f->background_pressure = r.non_negative("background_pressure", 0.0);
+  return f;
+}
+
 }  // namespace
 
 nlohmann::json FluidBodyKeys::dump() const {
@@ -63,13 +80,22 @@ nlohmann::json FluidBodyKeys::dump() const {
 }
 
 ModuleKeys fluid_keys() {
-  return {FluidBodyKeys::module,
-          [](MapReader& b, const BodySpec& body, const std::string& p, const Scene&) {
+  return {.module = FluidBodyKeys::module,
+          .read_body = [](MapReader& b, const BodySpec& body, const std::string& p,
+                          const Scene& s) -> std::shared_ptr<const ModuleParams> {
             auto k = std::make_shared<FluidBodyKeys>();
             read_shifting(b, body, p, *k);
             read_walls(b, body, p, *k);
-            return std::shared_ptr<const BodyParams>(std::move(k));
-          }};
+            const Material& m = s.materials[body.material];
+            if ((body.phase == "solid" || body.phase == "rigid") &&
+                module_params<FluidMaterial>(m.params).background_pressure > 0)
+              scene_error(
+                  "materials." + m.name + ".background_pressure",
+                  "applies to fluids only (body '" + body.name + "' is " + body.phase + ")");
+            return k;
+          },
+          .read_material = [](MapReader& r, Material&,
+                              const std::string&) { return read_fluid_material(r); }};
 }
 
 }  // namespace monosph

@@ -7,7 +7,7 @@
 
 namespace monosph {
 
-struct FluidBodyKeys : BodyParams {
+struct FluidBodyKeys : ModuleParams {
   static constexpr const char* module = "fluid";
   // delta-plus particle shifting (Sun et al. 2017): reference speed U (0: off), the
   // anti-clustering term R (W_ij / W(dp))^n.

@@ -49,7 +49,7 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
   // turned at 1.77 gamma/2 instead of 0.95; cases/couette_cylinder).
   bool any_rigid = false;
   for (const auto& b : sim.bodies()) any_rigid = any_rigid || b.phase == kRigid;
-  for (const auto& b : sim.bodies()) keys_.push_back(body_params<FluidBodyKeys>(b.params));
+  for (const auto& b : sim.bodies()) keys_.push_back(module_params<FluidBodyKeys>(b.params));
   for (std::size_t i = 0; i < keys_.size(); ++i) {
     const FluidBodyKeys& k = keys_[i];
     if (sim.bodies()[i].phase == kFluid)
@@ -66,6 +66,7 @@ FluidModule<D>::FluidModule(Simulation<D>& sim) {
     c0_.push_back(m.sound_speed());
     rho0_.push_back(m.density);
     nu_.push_back(m.viscosity / m.density);
+    eos_.push_back(module_params<FluidMaterial>(m.params));
   }
 }
 
@@ -107,7 +108,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
     if (ph[i] == kFluid)  // p = c0^2 (rho - rho0) (Sun Eq. 2), not below cavitation, + p_b
-      pr[i] = mats[mt[i]].fluid_pressure(rho[i]);
+      pr[i] = eos_[mt[i]].pressure(mats[mt[i]], rho[i]);
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] == kFluid) {
@@ -180,7 +181,7 @@ void FluidModule<D>::check_no_free_surface(Simulation<D>& sim) {
   const auto& mats = sim.materials();
   std::vector<double> count(mats.size(), 0.0);
   for (std::size_t i = 0; i < sim.owned(); ++i)
-    if (ph[i] == kFluid && mats[mt[i]].background_pressure > 0 && lam[i] < 0.75) count[mt[i]] += 1;
+    if (ph[i] == kFluid && eos_[mt[i]].background_pressure > 0 && lam[i] < 0.75) count[mt[i]] += 1;
   sim.comm().sum(count);
   for (std::size_t k = 0; k < mats.size(); ++k)
     if (count[k] > 0)

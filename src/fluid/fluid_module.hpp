@@ -16,6 +16,7 @@
 
 #include "core/simulation.hpp"
 #include "fluid/fluid_keys.hpp"
+#include "fluid/fluid_material.hpp"
 
 namespace monosph {
 
@@ -40,6 +41,7 @@ class FluidModule : public Module<D> {
   bool any_shift_ = false, any_consistent_ = false;
   int kpw_, kvw_, kgrad_, klam_, kshift_, kff_, kaw_ = -1, kvprev_ = -1;
   std::vector<double> c0_, rho0_, nu_;  // per material
+  std::vector<FluidMaterial> eos_;      // per material (fluid_material.hpp)
   std::vector<Vec<D>> gb_;              // body force per body
   bool any_wall_ = false;
   bool surface_checked_ = false;

@@ -11,7 +11,7 @@ ModuleKeys heat_keys() {
             auto k = std::make_shared<HeatBodyKeys>();
             if (!b.has("heat_conduction")) {
               b.optional("heat_conduction");
-              return std::shared_ptr<const BodyParams>(std::move(k));
+              return std::shared_ptr<const ModuleParams>(std::move(k));
             }
             if (body.phase != "solid" && body.phase != "fluid")
               scene_error(p + ".heat_conduction", "applies to solid and fluid bodies");
@@ -22,7 +22,7 @@ ModuleKeys heat_keys() {
             if (!(m.heat_capacity > 0))
               scene_error(p + ".heat_conduction",
                           "needs the heat_capacity of material '" + m.name + "' (J/(kg K), > 0)");
-            return std::shared_ptr<const BodyParams>(std::move(k));
+            return std::shared_ptr<const ModuleParams>(std::move(k));
           }};
 }
 

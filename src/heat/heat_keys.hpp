@@ -4,7 +4,7 @@
 
 namespace monosph {
 
-struct HeatBodyKeys : BodyParams {
+struct HeatBodyKeys : ModuleParams {
   static constexpr const char* module = "heat";
   double conductivity = 0;  // thermal conductivity k, W/(m K); 0: no conduction
   // Nothing for a body without conduction (the configuration of scenes without the key is as

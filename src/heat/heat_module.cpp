@@ -10,7 +10,7 @@ HeatModule<D>::HeatModule(Simulation<D>& sim) {
   // Explicit diffusion is stable for dt below about 0.25 rho c h^2 / k; 0.1 leaves a margin.
   const double h = sim.kernel().h();
   for (const auto& b : sim.bodies()) {
-    k_.push_back(body_params<HeatBodyKeys>(b.params).conductivity);
+    k_.push_back(module_params<HeatBodyKeys>(b.params).conductivity);
     const Material& mat = sim.materials()[b.material];
     if (k_.back() > 0)
       max_dt_ = std::min(max_dt_, 0.1 * mat.density * mat.heat_capacity * h * h / k_.back());
@@ -24,7 +24,7 @@ HeatModule<D>::HeatModule(Simulation<D>& sim) {
 template <int D>
 bool HeatModule<D>::needed(const Simulation<D>& sim) {
   return std::any_of(sim.bodies().begin(), sim.bodies().end(), [](const BodyInfo& b) {
-    return body_params<HeatBodyKeys>(b.params).conductivity > 0;
+    return module_params<HeatBodyKeys>(b.params).conductivity > 0;
   });
 }
 

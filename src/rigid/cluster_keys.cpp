@@ -18,7 +18,7 @@ ModuleKeys cluster_keys() {
               if (k->per_part && body.shape.kind != Shape::Kind::Union)
                 scene_error(p + ".clusters", "per_part needs a shape that is a union of parts");
             }
-            return std::shared_ptr<const BodyParams>(std::move(k));
+            return std::shared_ptr<const ModuleParams>(std::move(k));
           }};
 }
 

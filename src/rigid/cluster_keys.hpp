@@ -4,7 +4,7 @@
 
 namespace monosph {
 
-struct ClusterBodyKeys : BodyParams {
+struct ClusterBodyKeys : ModuleParams {
   static constexpr const char* module = "clusters";
   bool per_part = false;  // one rigid cluster per part of a union shape (else one per body)
   nlohmann::json dump() const override { return {{"cluster_per_part", per_part}}; }

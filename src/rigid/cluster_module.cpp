@@ -157,7 +157,7 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     if (sim.bodies()[b].phase != kRigid) continue;
     const BodySpec& spec = scene.bodies[b];
-    const bool per_part = body_params<ClusterBodyKeys>(spec.params).per_part;
+    const bool per_part = module_params<ClusterBodyKeys>(spec.params).per_part;
     const std::size_t nparts = per_part ? spec.shape.parts.size() : 1;
     std::vector<double> count(nparts, 0.0);
     std::vector<std::size_t> part_of(p.size(), 0);

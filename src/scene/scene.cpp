@@ -175,9 +175,9 @@ Scene read_scene(const std::string& text, const std::vector<std::string>& overri
   read_bodies(r, s);
   read_boundaries(r, s);
   read_surfaces(r, s, root, origin);
-  read_contact(r, s);
-  read_lubrication(r, s);
-  read_solid_contact(r, s);
+  for (const auto& m : registered_module_keys())  // the modules' sections (contact, ...)
+    if (m.read_section)
+      if (auto params = m.read_section(r, s)) s.params[m.module] = std::move(params);
 
   s.body_force = r.has("body_force") ? r.vector("body_force", dim)
                                      : (r.optional("body_force"), Point(dim, 0.0));

@@ -32,49 +32,26 @@ struct Shape {
   void bounds(Point& lo, Point& hi) const;  // axis-aligned bounding box
 };
 
-// Johnson-Cook yield stress (MMB Eq. 23): [A + B eps^n][1 + C ln(rate/rate0)][1 - T*^m].
-struct JohnsonCook {
-  bool on = false;
-  double A = 0, B = 0, n = 1, C = 0, rate0 = 1, m = 1, T_ref = 293.15, T_melt = 0;
-};
-
-// Johnson-Cook failure strain (MMB Eq. 26), damage rate = plastic strain rate / eps_f (Eq. 25).
-struct JohnsonCookDamage {
-  bool on = false;
-  double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;
-  double min_failure_strain = 1e-6;  // floor of eps_f (as LS-DYNA's EFMIN): D1 < 0 fits give
-                                     // eps_f <= 0 at high triaxiality
-};
-
+// A material's generic keys; each module reads its own (the solid's plasticity and damage, the
+// fluid's cavitation and background pressure) into `params` (scene/module_keys.hpp).
 struct Material {
   std::string name;
-  double density = 0;           // rho0
-  double bulk_modulus = 0;      // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
-  double shear_modulus = 0;     // mu
-  JohnsonCook plasticity;       // J2 plasticity (MMB Eq. 22-23) when `on`
-  JohnsonCookDamage damage;     // Johnson-Cook damage (MMB Eq. 25-26) when `on`
-  double heat_capacity = 0;     // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
-  double taylor_quinney = 0.9;  // eta of MMB Eq. 24
-  double viscosity = 0;         // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
-  double cavitation_pressure = -std::numeric_limits<double>::infinity();  // fluid: p >= it
-  // Fluid: p_b added to the EOS pressure, p = K (rho/rho0 - 1) + p_b (Morris, Fox & Zhu 1997,
-  // Sect. 2.2): keeps a confined flow's pressure positive against the tensile instability.
-  // Only for flows without a free surface (the fluid module stops a run that has one).
-  double background_pressure = 0;
-  // `elasticity: neo_hookean`: compressible neo-Hookean PK2 stress from F (Ganzenmueller 2015
-  // Eq. 44), total-Lagrangian bodies only; otherwise hypoelastic (Jaumann S + EOS pressure).
-  bool neo_hookean = false;
+  double density = 0;        // rho0
+  double bulk_modulus = 0;   // K, EOS p = K (rho/rho0 - 1) (MMB Eq. 13)
+  double shear_modulus = 0;  // mu
+  double heat_capacity = 0;  // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
+  double viscosity = 0;      // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
+  // The temperature the material starts at unless a body gives one: 293.15 K, or the Johnson-Cook
+  // reference temperature of a plastic material (set by the solid module).
+  double reference_temperature = 293.15;
+  ParamMap params;  // each module's parameters of this material
   double pressure(double rho) const { return bulk_modulus * (rho / density - 1.0); }  // Eq. 13
-  // The fluid EOS: Eq. 13 held at the cavitation pressure, plus the background pressure.
-  double fluid_pressure(double rho) const {
-    return std::max(pressure(rho), cavitation_pressure) + background_pressure;
-  }
   double sound_speed() const;  // sqrt(K/rho0), used by artificial viscosity
   double wave_speed() const;   // sqrt((K + 4 mu/3)/rho0), used by the time step
-  // A body's initial temperature: `given` (initial.temperature) when set, else the Johnson-Cook
-  // reference temperature, else 293.15 K.
+  // A body's initial temperature: `given` (initial.temperature) when set, else the material's
+  // reference temperature.
   double initial_temperature(double given) const {
-    return given > 0 ? given : plasticity.on ? plasticity.T_ref : 293.15;
+    return given > 0 ? given : reference_temperature;
   }
   double youngs_modulus() const {
     return 9 * bulk_modulus * shear_modulus / (3 * bulk_modulus + shear_modulus);
@@ -113,36 +90,7 @@ struct BodySpec {
   bool fill_shells = false;  // body-fitted concentric shells (sphere, ring; shell_fill.hpp)
   Point angular_velocity;    // rigid: initial (2D: one value; 3D: a vector)
   // Each module's parameters of this body, read by the module (scene/module_keys.hpp).
-  BodyParamMap params;
-};
-
-// Contact between rigid-cluster particles and other bodies' particles (substitute for the law of
-// Cleary et al. 2012; ../shared/reference/equations.md Sect. 6): spheres of diameter
-// `distance` dp, Hertz (default) or Lennard-Jones-type (Monaghan 1994).
-struct ContactSpec {
-  std::string law = "hertz";  // hertz | lennard_jones
-  double distance = 1.0;      // contact diameter, fraction of dp
-  double damping = 0;         // hertz: normal dashpot, ratio of critical
-  double friction = 0;        // Coulomb coefficient of the pair's sliding
-  double strength = 0;        // lennard_jones: D (m^2/s^2)
-  double p1 = 12, p2 = 4;     // lennard_jones exponents
-};
-
-// Contact between solid bodies of different continua (section `solid_contact`; src/coupling):
-// Hertz spheres of diameter distance * dp, repulsive only, with Coulomb friction.
-struct SolidContactSpec {
-  bool on = false;
-  double distance = 1.0;  // contact diameter d_c, fraction of dp
-  double damping = 0;     // normal dashpot, ratio of critical
-  double friction = 0;    // Coulomb coefficient of the pair's sliding
-};
-
-// Sub-grid lubrication between rigid clusters and surfaces (section `lubrication`; src/coupling).
-struct LubricationSpec {
-  bool on = false;
-  double cutoff = 1.5;    // resolved gap h_c, in dp: the film force is added below it
-  double min_gap = 0.05;  // smallest gap (surface roughness), in dp
-  double viscosity = 0;   // dynamic viscosity of the film (default: the fluid's)
+  ParamMap params;
 };
 
 struct BoundarySpec {
@@ -230,9 +178,7 @@ struct Scene {
   std::vector<BodySpec> bodies;
   std::vector<BoundarySpec> boundaries;
   std::vector<SurfaceSpec> surfaces;  // rigid surfaces (section `surfaces`)
-  ContactSpec contact;                // section `contact`
-  LubricationSpec lubrication;        // section `lubrication`
-  SolidContactSpec solid_contact;     // section `solid_contact`
+  ParamMap params;  // each module's parameters of its top-level section (contact, lubrication, ...)
   std::vector<std::string> modules;
   Point body_force;
   double end_time = 0;

@@ -155,10 +155,6 @@ void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, cons
   } else {
     b.optional("stress_divergence");
   }
-  if (body.formulation == 2 && s.materials[body.material].plasticity.on)
-    scene_error(p + ".formulation",
-                "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" +
-                    s.materials[body.material].name + "' has plasticity");
 }
 
 // Damping, body force, fill.
@@ -201,7 +197,9 @@ BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   read_initial(b, body, p, s);
   read_stabilisation(b, body, p, s);
   read_other_keys(b, body, p, dim);
-  for (const auto& m : registered_module_keys()) body.params[m.module] = m.read_body(b, body, p, s);
+  for (const auto& m : registered_module_keys())
+    if (m.read_body)
+      if (auto params = m.read_body(b, body, p, s)) body.params[m.module] = std::move(params);
   b.finish();
   // The body must lie inside the domain.
   Point lo, hi;
@@ -227,16 +225,10 @@ void check_continua(const Scene& s) {
             "bodies[" + std::to_string(i) + "] (" + s.bodies[i].name + ").stress_divergence",
             "differs from body '" + s.bodies[j].name + "' of the same continuum '" +
                 s.bodies[i].continuum + "'");
-  // Total-Lagrangian bodies: own continuum, no periodic axes; neo-Hookean materials only there.
+  // Total-Lagrangian bodies: own continuum, no periodic axes.
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const auto& bi = s.bodies[i];
     const std::string pi = "bodies[" + std::to_string(i) + "] (" + bi.name + ")";
-    const Material& mi = s.materials[bi.material];
-    if ((bi.phase == "solid" || bi.phase == "rigid") && mi.background_pressure > 0)
-      scene_error("materials." + mi.name + ".background_pressure",
-                  "applies to fluids only (body '" + bi.name + "' is " + bi.phase + ")");
-    if (bi.phase == "solid" && !bi.total_lagrangian && s.materials[bi.material].neo_hookean)
-      scene_error(pi + ".material", "elasticity: neo_hookean needs formulation: total_lagrangian");
     if (s.has_mirror() && bi.phase == "rigid")
       scene_error(pi + ".phase", "rigid bodies do not support domain.mirror");
     if (bi.total_lagrangian)

@@ -20,37 +20,16 @@ json shape_json(const Shape& s) {
   return j;
 }
 
+// The generic keys, then each module's (merged: one object, keys sorted).
 json material_json(const Material& m) {
-  const auto& p = m.plasticity;
-  const auto& d = m.damage;
-  return {{"name", m.name},
-          {"density", m.density},
-          {"bulk_modulus", m.bulk_modulus},
-          {"shear_modulus", m.shear_modulus},
-          {"plasticity",
-           {{"on", p.on},
-            {"A", p.A},
-            {"B", p.B},
-            {"n", p.n},
-            {"C", p.C},
-            {"rate0", p.rate0},
-            {"m", p.m},
-            {"T_ref", p.T_ref},
-            {"T_melt", p.T_melt}}},
-          {"damage",
-           {{"on", d.on},
-            {"d1", d.d1},
-            {"d2", d.d2},
-            {"d3", d.d3},
-            {"d4", d.d4},
-            {"d5", d.d5},
-            {"min_failure_strain", d.min_failure_strain}}},
-          {"heat_capacity", m.heat_capacity},
-          {"taylor_quinney", m.taylor_quinney},
-          {"viscosity", m.viscosity},
-          {"cavitation_pressure", m.cavitation_pressure},
-          {"background_pressure", m.background_pressure},
-          {"neo_hookean", m.neo_hookean}};
+  json j = {{"name", m.name},
+            {"density", m.density},
+            {"bulk_modulus", m.bulk_modulus},
+            {"shear_modulus", m.shear_modulus},
+            {"heat_capacity", m.heat_capacity},
+            {"viscosity", m.viscosity}};
+  for (const auto& [module, params] : m.params) j.update(params->dump());
+  return j;
 }
 
 // The generic keys, then each module's (merged: one object, keys sorted).
@@ -107,28 +86,6 @@ json probe_json(const ProbeSpec& p) {
           {"columns", p.columns},     {"size", p.size}};
 }
 
-json couplings_json(const Scene& s) {
-  const auto& c = s.contact;
-  const auto& l = s.lubrication;
-  const auto& sc = s.solid_contact;
-  return {
-      {"contact",
-       {{"law", c.law},
-        {"distance", c.distance},
-        {"damping", c.damping},
-        {"friction", c.friction},
-        {"strength", c.strength},
-        {"p1", c.p1},
-        {"p2", c.p2}}},
-      {"lubrication",
-       {{"on", l.on}, {"cutoff", l.cutoff}, {"min_gap", l.min_gap}, {"viscosity", l.viscosity}}},
-      {"solid_contact",
-       {{"on", sc.on},
-        {"distance", sc.distance},
-        {"damping", sc.damping},
-        {"friction", sc.friction}}}};
-}
-
 json time_json(const Scene& s) {
   return {{"end_time", s.end_time},
           {"reference_end_time", s.reference_end_time},
@@ -173,7 +130,7 @@ nlohmann::json scene_config(const Scene& s) {
             {"variables", s.variables},
             {"reorder_every", s.reorder_every},
             {"limits", {{"max_particles", s.max_particles}, {"max_memory", s.max_memory}}}};
-  j.update(couplings_json(s));
+  for (const auto& [module, params] : s.params) j.update(params->dump());  // their sections
   for (const auto& m : s.materials) j["materials"].push_back(material_json(m));
   for (const auto& b : s.bodies) j["bodies"].push_back(body_json(b));
   for (const auto& bc : s.boundaries) j["boundary_conditions"].push_back(boundary_json(bc));

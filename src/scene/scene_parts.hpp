@@ -30,11 +30,8 @@ void read_boundaries(MapReader& root, Scene& s);
 std::vector<std::string> expressions(MapReader& r, const std::string& key, int dim,
                                      const Constants& vars, const std::string& variables = "xyzt");
 
-// scene_surfaces.cpp: `surfaces`, `contact` and `lubrication`.
+// scene_surfaces.cpp: `surfaces`.
 void read_surfaces(MapReader& root, Scene& s, YAML::Node& tree, const std::string& origin);
-void read_contact(MapReader& root, Scene& s);
-void read_lubrication(MapReader& root, Scene& s);
-void read_solid_contact(MapReader& root, Scene& s);
 
 // scene_sections.cpp: `time_step`, `guards`, `output`, `reference`, `checks`, `limits`.
 void read_time_step(MapReader& root, Scene& s);

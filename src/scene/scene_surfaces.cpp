@@ -1,5 +1,4 @@
-// The scene sections `surfaces` (rigid surfaces, MMB Sect. 3), `contact`, `lubrication` and
-// `solid_contact`.
+// The scene section `surfaces` (rigid surfaces, MMB Sect. 3).
 #include <cmath>
 #include <fstream>
 
@@ -120,42 +119,6 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
 
 }  // namespace
 
-// Section `lubrication` (src/coupling/lubrication_module.hpp): needs a rigid and a fluid body;
-// the film viscosity defaults to the fluid's.
-void read_lubrication(MapReader& r, Scene& s) {
-  if (!r.has("lubrication")) {
-    r.optional("lubrication");
-    return;
-  }
-  MapReader c(r.node("lubrication"), "lubrication");
-  auto& l = s.lubrication;
-  l.on = true;
-  l.cutoff = c.positive("cutoff", 1.5);
-  l.min_gap = c.positive("min_gap", 0.05);
-  if (!(l.min_gap < l.cutoff))
-    scene_error("lubrication.min_gap", "must be below lubrication.cutoff");
-  const BodySpec* fluid = nullptr;
-  bool rigid = false;
-  for (const auto& b : s.bodies) {
-    if (b.phase == "fluid" && !fluid) fluid = &b;
-    rigid = rigid || b.phase == "rigid";
-  }
-  if (!rigid)
-    scene_error("lubrication",
-                "needs a rigid body (the film lies between a cluster and a surface)");
-  if (c.has("viscosity")) {
-    l.viscosity = c.positive("viscosity");
-  } else {
-    if (!fluid) scene_error("lubrication.viscosity", "is required without a fluid body");
-    l.viscosity = s.materials[fluid->material].viscosity;
-    if (!(l.viscosity > 0))
-      scene_error("lubrication.viscosity", "the fluid's material has no viscosity: give one");
-  }
-  c.finish();
-  if (std::find(s.modules.begin(), s.modules.end(), "lubrication") == s.modules.end())
-    s.modules.push_back("lubrication");
-}
-
 void read_surfaces(MapReader& r, Scene& s, YAML::Node& root, const std::string& origin) {
   if (!r.has("surfaces")) return void(r.optional("surfaces"));
   auto list = r.node("surfaces");
@@ -176,54 +139,6 @@ void read_surfaces(MapReader& r, Scene& s, YAML::Node& root, const std::string& 
   s.yaml = out.c_str();
   if (std::find(s.modules.begin(), s.modules.end(), "rigid") == s.modules.end())
     s.modules.push_back("rigid");
-}
-
-// Rigid-cluster contact (equations.md Sect. 6).
-void read_contact(MapReader& r, Scene& s) {
-  if (!r.has("contact")) return void(r.optional("contact"));
-  MapReader c(r.node("contact"), "contact");
-  s.contact.law = c.choice("law", {"hertz", "lennard_jones"}, "hertz");
-  s.contact.distance = c.positive("distance", 1.0);
-  s.contact.damping = c.non_negative("damping", 0.0);
-  s.contact.friction = c.non_negative("friction", 0.0);
-  if (s.contact.law == "lennard_jones") {
-    s.contact.strength = c.positive("strength");
-    s.contact.p1 = c.positive("p1", 12.0);
-    s.contact.p2 = c.positive("p2", 4.0);
-    if (!(s.contact.p1 > s.contact.p2)) scene_error("contact.p1", "must exceed contact.p2");
-  } else {
-    for (const char* k : {"strength", "p1", "p2"})
-      if (c.has(k)) scene_error(std::string("contact.") + k, "applies to law lennard_jones only");
-  }
-  c.finish();
-}
-
-// Contact between solid bodies of different continua (src/coupling/solid_contact_module.hpp):
-// needs two solid bodies that are not one continuum; the contact diameter lies within the kernel
-// support (h >= dp, support >= 2h).
-void read_solid_contact(MapReader& r, Scene& s) {
-  if (!r.has("solid_contact")) return void(r.optional("solid_contact"));
-  MapReader c(r.node("solid_contact"), "solid_contact");
-  auto& sc = s.solid_contact;
-  sc.on = true;
-  sc.distance = c.positive("distance", 1.0);
-  if (sc.distance > 2)
-    scene_error("solid_contact.distance",
-                "must lie in (0, 2] (the contact diameter in dp, within the kernel support)");
-  sc.damping = c.non_negative("damping", 0.0);
-  sc.friction = c.non_negative("friction", 0.0);
-  c.finish();
-  std::vector<std::string> continua;
-  for (const auto& b : s.bodies)
-    if (b.phase == "solid" &&
-        std::find(continua.begin(), continua.end(), b.continuum) == continua.end())
-      continua.push_back(b.continuum);
-  if (continua.size() < 2)
-    scene_error("solid_contact",
-                "needs two solid bodies of different continua (bodies of one continuum meet "
-                "through the SPH equations)");
-  if (std::find(s.modules.begin(), s.modules.end(), "solid_contact") == s.modules.end())
-    s.modules.push_back("solid_contact");
 }
 
 }  // namespace monosph

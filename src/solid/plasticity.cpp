@@ -87,23 +87,24 @@ double jc_failure_strain(const JohnsonCookDamage& d, const JohnsonCook& jc, doub
   return std::max(a * b * c, d.min_failure_strain);
 }
 
-bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, double rho, double dt) {
-  if (m.damage.on && pt.D >= 1) {  // failed for good: no deviatoric stress (MMB Sect. 2.3)
+bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, const SolidMaterial& sm,
+                    double rho, double dt) {
+  if (sm.damage.on && pt.D >= 1) {  // failed for good: no deviatoric stress (MMB Sect. 2.3)
     S.setZero();
     pt.rate = 0;
     return false;
   }
-  const ReturnResult r = radial_return(S, m.shear_modulus, m.plasticity, pt.eps_p, pt.T, dt);
+  const ReturnResult r = radial_return(S, m.shear_modulus, sm.plasticity, pt.eps_p, pt.T, dt);
   pt.sigma_y = r.sigma_y;
   pt.rate = dt > 0 ? r.deps / dt : 0;
   if (!r.plastic) return false;
   pt.eps_p += r.deps;
   // MMB Eq. 24: Sigma : dEp = sigma_eq deps for J2 flow (the pressure does no plastic work).
-  if (m.heat_capacity > 0) pt.T += m.taylor_quinney * r.sigma_y * r.deps / (rho * m.heat_capacity);
-  if (m.damage.on && r.sigma_y > 0) {
+  if (m.heat_capacity > 0) pt.T += sm.taylor_quinney * r.sigma_y * r.deps / (rho * m.heat_capacity);
+  if (sm.damage.on && r.sigma_y > 0) {
     // MMB Eq. 25-26 with the triaxiality sigma* = -p / sigma_eq.
     const double ef =
-        jc_failure_strain(m.damage, m.plasticity, -m.pressure(rho) / r.sigma_y, pt.rate, pt.T);
+        jc_failure_strain(sm.damage, sm.plasticity, -m.pressure(rho) / r.sigma_y, pt.rate, pt.T);
     pt.D = std::min(1.0, pt.D + r.deps / ef);
     if (pt.D >= 1) S.setZero();
   }

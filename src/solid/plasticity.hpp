@@ -3,6 +3,7 @@
 // (Mohseni-Mofidi & Bierwisch 2020, "MMB", Sect. 2.2-2.3, Eq. 22-26).
 #include "core/types.hpp"
 #include "scene/scene.hpp"
+#include "solid/solid_material.hpp"
 
 namespace monosph {
 
@@ -46,6 +47,7 @@ struct PlasticPoint {
 // One step after the elastic predictor S (trial deviator): return mapping (Eq. 22-23), adiabatic
 // heating (Eq. 24), damage growth (Eq. 25-26) with the pressure p = K (rho/rho0 - 1) (Eq. 13).
 // A failed point (D >= 1) keeps S = 0 for good. Returns true if the step was plastic.
-bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, double rho, double dt);
+bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, const SolidMaterial& sm,
+                    double rho, double dt);
 
 }  // namespace monosph

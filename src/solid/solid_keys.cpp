@@ -2,6 +2,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
+#include "solid/solid_material.hpp"
 
 namespace monosph {
 
@@ -67,6 +68,18 @@ void read_laplacian_and_erosion(MapReader& b, const BodySpec& body, const std::s
   k.erosion = e == "none" ? 0 : e == "failed" ? 1 : 2;
 }
 
+// What a body's formulation asks of its material.
+void check_material(const BodySpec& body, const std::string& p, const Scene& s) {
+  const Material& m = s.materials[body.material];
+  const SolidMaterial& sm = module_params<SolidMaterial>(m.params);
+  if (body.formulation == 2 && sm.plasticity.on)
+    scene_error(p + ".formulation",
+                "non_hourglass (Zhang et al. 2024) is for elastic materials; material '" + m.name +
+                    "' has plasticity");
+  if (body.phase == "solid" && !body.total_lagrangian && sm.neo_hookean)
+    scene_error(p + ".material", "elasticity: neo_hookean needs formulation: total_lagrangian");
+}
+
 }  // namespace
 
 nlohmann::json SolidBodyKeys::dump() const {
@@ -82,14 +95,17 @@ nlohmann::json SolidBodyKeys::dump() const {
 }
 
 ModuleKeys solid_keys() {
-  return {SolidBodyKeys::module,
-          [](MapReader& b, const BodySpec& body, const std::string& p, const Scene& s) {
+  return {.module = SolidBodyKeys::module,
+          .read_body = [](MapReader& b, const BodySpec& body, const std::string& p,
+                          const Scene& s) -> std::shared_ptr<const ModuleParams> {
+            check_material(body, p, s);
             auto k = std::make_shared<SolidBodyKeys>();
             read_hourglass(b, body, p, *k);
             read_self_contact(b, body, p, *k);
             read_laplacian_and_erosion(b, body, p, s, *k);
-            return std::shared_ptr<const BodyParams>(std::move(k));
-          }};
+            return k;
+          },
+          .read_material = read_solid_material};
 }
 
 }  // namespace monosph

@@ -5,7 +5,7 @@
 
 namespace monosph {
 
-struct SolidBodyKeys : BodyParams {
+struct SolidBodyKeys : ModuleParams {
   static constexpr const char* module = "solid";
   double hg_xi = 0, hg_zeta = 0, hg_chi = 0;  // hourglass control (MMB Eq. 32-34)
   int hg_reference = 0;  // error vector against: 0 initial (MMB), 1 intermediate, 2 least squares

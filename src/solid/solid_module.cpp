@@ -9,7 +9,6 @@
 #include "core/sph_equations.hpp"
 #include "elasticity.hpp"
 #include "plasticity.hpp"
-#include "solid_keys.hpp"
 
 namespace monosph {
 
@@ -21,7 +20,8 @@ inline bool is_solid(std::int64_t ph) {
 
 template <int D>
 SolidModule<D>::SolidModule(Simulation<D>& sim) {
-  for (const auto& b : sim.bodies()) keys_.push_back(body_params<SolidBodyKeys>(b.params));
+  for (const auto& b : sim.bodies()) keys_.push_back(module_params<SolidBodyKeys>(b.params));
+  for (const auto& m : sim.materials()) mat_.push_back(module_params<SolidMaterial>(m.params));
   auto& p = sim.particles();
   kS_ = p.add_field("deviatoric_stress", 9);
   kvm_ = p.add_field("von_mises", 1, FieldType::Real, true);
@@ -45,7 +45,7 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
     if (b.phase != kSolid) continue;
     if (b.formulation == 2 && klap_ < 0)  // Zhang et al. 2024, Eq. 20
       klap_ = p.add_field("shear_laplacian_integral", D);
-    const Material& m = sim.materials()[b.material];
+    const SolidMaterial& m = mat_[b.material];
     any_plastic_ = any_plastic_ || m.plasticity.on;
     any_damage_ = any_damage_ || m.damage.on;
     const SolidBodyKeys& k = keys_[&b - sim.bodies().data()];
@@ -94,7 +94,8 @@ void SolidModule<D>::on_create(Simulation<D>& sim) {
     const BodyInfo& b = bodies[bd[i]];
     const Material& mat = sim.materials()[b.material];
     T[i] = mat.initial_temperature(b.temperature);
-    sy[i] = mat.plasticity.on ? jc_yield(mat.plasticity, 0, 0, T[i]) : 0;
+    const JohnsonCook& jc = mat_[b.material].plasticity;
+    sy[i] = jc.on ? jc_yield(jc, 0, 0, T[i]) : 0;
   }
 }
 
@@ -119,7 +120,7 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   // Hypoelastic stress of both formulations; neo-Hookean S comes from F (constitutive).
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i)
-    if (is_solid(ph[i]) && !mats[mt[i]].neo_hookean)
+    if (is_solid(ph[i]) && !mat_[mt[i]].neo_hookean)
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
   if (klap_ >= 0) accumulate_laplacian(sim, dt);
   if (any_plastic_) plastic_return(sim, dt);
@@ -173,10 +174,9 @@ void SolidModule<D>::plastic_return(Simulation<D>& sim, double dt) {
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
-    const Material& mat = mats[mt[i]];
-    if (!mat.plasticity.on) continue;
+    if (!mat_[mt[i]].plasticity.on) continue;
     PlasticPoint pt{ep[i], epr[i], T[i], kdmg_ >= 0 ? dmg[i] : 0.0, sy[i]};
-    plastic_update(S[i], pt, mat, rho[i], dt);
+    plastic_update(S[i], pt, mats[mt[i]], mat_[mt[i]], rho[i], dt);
     ep[i] = pt.eps_p, epr[i] = pt.rate, T[i] = pt.T, sy[i] = pt.sigma_y;
     if (kdmg_ >= 0) dmg[i] = pt.D;
   }

@@ -9,6 +9,7 @@
 
 #include "core/simulation.hpp"
 #include "solid/solid_keys.hpp"
+#include "solid/solid_material.hpp"
 #include "total_lagrangian.hpp"
 
 namespace monosph {
@@ -45,6 +46,7 @@ class SolidModule : public Module<D> {
 
  private:
   std::vector<SolidBodyKeys> keys_;  // per body (solid_keys.hpp)
+  std::vector<SolidMaterial> mat_;   // per material (solid_material.hpp)
   // Particle i belongs to a solid body of the Eulerian (MMB) formulation.
   bool eulerian(std::int64_t ph, std::int64_t body) const {
     return ph == kSolid && !(tl_ && tl_->is_tl(body));

@@ -15,8 +15,10 @@ TotalLagrangian<D>::TotalLagrangian(Simulation<D>& sim, int kS, int kF, int kgra
     : kS_(kS), kF_(kF), kgradv_(kgradv), kX0_(kX0), kep_(kep), ksy_(ksy) {
   for (const auto& b : sim.bodies()) {
     tlb_.push_back(b.total_lagrangian ? 1 : 0);
-    keys_.push_back(body_params<SolidBodyKeys>(b.params));
+    keys_.push_back(module_params<SolidBodyKeys>(b.params));
   }
+  for (const auto& m : sim.materials())
+    neo_hookean_.push_back(module_params<SolidMaterial>(m.params).neo_hookean);
   // Not decomposed over ranks: the reference pairs would cross rank boundaries.
   if (sim.comm().size() > 1) throw InputError("formulation: total_lagrangian runs on one rank");
   const Scene& sc = sim.scene();
@@ -261,7 +263,7 @@ void TotalLagrangian<D>::constitutive(Simulation<D>& sim) {
     const Material& mat = mats[mt[i]];
     const Mat<D>& F = F_[s];
     const double J = F.determinant();
-    if (mat.neo_hookean) {
+    if (neo_hookean_[mt[i]]) {
       // G15 Eq. 44: S = mu (I - C^-1) + lambda ln J C^-1, P = F S (G15 Eq. 20). Plane strain in
       // 2D (F_zz = 1). Cauchy sigma = P F^T / J is kept as pressure and deviator for output.
       const double mu = mat.shear_modulus, lam = mat.bulk_modulus - 2.0 * mu / 3.0;

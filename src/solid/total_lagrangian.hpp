@@ -21,6 +21,7 @@
 
 #include "core/simulation.hpp"
 #include "solid/solid_keys.hpp"
+#include "solid/solid_material.hpp"
 
 namespace monosph {
 
@@ -46,6 +47,7 @@ class TotalLagrangian {
 
  private:
   std::vector<SolidBodyKeys> keys_;  // per body (solid_keys.hpp)
+  std::vector<char> neo_hookean_;    // per material (solid_material.hpp)
   void build(Simulation<D>& sim);    // the reference pairs, once
   void map_slots(Simulation<D>& sim);
   // sum_j (f_j - f_i) (x) g_ij over the reference pairs of slot s (G15 Eq. 17 for f = x); f a

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "assemble.hpp"
+#include "fluid/fluid_material.hpp"
 #include "scene/scene_reader.hpp"
 
 using namespace monosph;
@@ -60,17 +61,20 @@ TEST(BackgroundPressure, AddsToTheEquationOfStateAboveTheCavitationFloor) {
   // p = K (rho/rho0 - 1) + p_b; the cavitation floor holds the gauge part (it is the liquid's
   // tension), so the total never falls below p_cav + p_b.
   Material m;
-  m.density = 1000, m.bulk_modulus = 4e5, m.background_pressure = 2500;
-  EXPECT_DOUBLE_EQ(m.fluid_pressure(1000), 2500);
-  EXPECT_NEAR(m.fluid_pressure(1010), 4e5 * 0.01 + 2500, 1e-9);
-  EXPECT_NEAR(m.fluid_pressure(990), -4e5 * 0.01 + 2500, 1e-9);
-  m.cavitation_pressure = -1000;
-  EXPECT_DOUBLE_EQ(m.fluid_pressure(990), -1000 + 2500);
+  m.density = 1000, m.bulk_modulus = 4e5;
+  FluidMaterial f;
+  f.background_pressure = 2500;
+  EXPECT_DOUBLE_EQ(f.pressure(m, 1000), 2500);
+  EXPECT_NEAR(f.pressure(m, 1010), 4e5 * 0.01 + 2500, 1e-9);
+  EXPECT_NEAR(f.pressure(m, 990), -4e5 * 0.01 + 2500, 1e-9);
+  f.cavitation_pressure = -1000;
+  EXPECT_DOUBLE_EQ(f.pressure(m, 990), -1000 + 2500);
   EXPECT_NEAR(m.pressure(1010), 4e5 * 0.01, 1e-9);  // the solids' EOS (MMB Eq. 13) has none
   // Read from the scene, and the run's pressure field carries it.
   auto sim = build(box(2500, true));
-  EXPECT_DOUBLE_EQ(sim->materials()[0].background_pressure, 2500);
-  EXPECT_DOUBLE_EQ(sim->materials()[1].background_pressure, 0);
+  EXPECT_DOUBLE_EQ(module_params<FluidMaterial>(sim->materials()[0].params).background_pressure,
+                   2500);
+  EXPECT_DOUBLE_EQ(module_params<FluidMaterial>(sim->materials()[1].params).background_pressure, 0);
   sim->init();
   auto& p = sim->particles();
   for (std::size_t i = 0; i < p.size(); ++i)

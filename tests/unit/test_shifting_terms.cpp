@@ -141,13 +141,13 @@ TEST(ShiftingTerms, TransportVelocityVanishesOnALatticeAndPullsADisplacedParticl
 
 TEST(ShiftingTerms, SceneKeys) {
   auto s = periodic_lattice("{form: transport_velocity, pressure: 400, consistent: true}");
-  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(s.bodies[0].params).shift_pb, 400);
-  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(s.bodies[0].params).shift_speed, 0);
-  EXPECT_TRUE(body_params<FluidBodyKeys>(s.bodies[0].params).shift_consistent);
+  EXPECT_DOUBLE_EQ(module_params<FluidBodyKeys>(s.bodies[0].params).shift_pb, 400);
+  EXPECT_DOUBLE_EQ(module_params<FluidBodyKeys>(s.bodies[0].params).shift_speed, 0);
+  EXPECT_TRUE(module_params<FluidBodyKeys>(s.bodies[0].params).shift_consistent);
   auto d = periodic_lattice("{speed: 0.1}");  // the delta-plus default is unchanged
-  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(d.bodies[0].params).shift_speed, 0.1);
-  EXPECT_DOUBLE_EQ(body_params<FluidBodyKeys>(d.bodies[0].params).shift_pb, 0);
-  EXPECT_FALSE(body_params<FluidBodyKeys>(d.bodies[0].params).shift_consistent);
+  EXPECT_DOUBLE_EQ(module_params<FluidBodyKeys>(d.bodies[0].params).shift_speed, 0.1);
+  EXPECT_DOUBLE_EQ(module_params<FluidBodyKeys>(d.bodies[0].params).shift_pb, 0);
+  EXPECT_FALSE(module_params<FluidBodyKeys>(d.bodies[0].params).shift_consistent);
   EXPECT_THROW(periodic_lattice("{form: transport_velocity}"), InputError);  // no pressure
   EXPECT_THROW(periodic_lattice("{form: transport_velocity, pressure: 1, speed: 1}"),
                InputError);  // speed belongs to delta_plus

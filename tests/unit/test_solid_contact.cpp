@@ -39,7 +39,7 @@ struct Rig {
   explicit Rig(const Scene& s) {
     sim = std::make_unique<Simulation<2>>(s);
     sim->add_module(std::make_unique<SphEquations<2>>(*sim, true));
-    if (s.solid_contact.on) {
+    if (module_params<SolidContactSpec>(s.params).on) {
       auto c = std::make_unique<SolidContactModule<2>>(*sim);
       contact = c.get();
       sim->add_module(std::move(c));

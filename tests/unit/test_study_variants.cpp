@@ -18,20 +18,20 @@ Scene with(const std::string& variant) {
 TEST(StudyVariants, NoneTurnsOffHourglassControlAndArtificialStress) {
   Scene s = with("none");
   ASSERT_EQ(s.bodies[0].phase, "solid");
-  EXPECT_EQ(body_params<SolidBodyKeys>(s.bodies[0].params).hg_xi, 0);
+  EXPECT_EQ(module_params<SolidBodyKeys>(s.bodies[0].params).hg_xi, 0);
   EXPECT_EQ(s.bodies[0].as_epsilon, 0);
 }
 
 TEST(StudyVariants, ArtificialStressReplacesHourglassControl) {
   Scene s = with("artificial_stress");
-  EXPECT_EQ(body_params<SolidBodyKeys>(s.bodies[0].params).hg_xi, 0);
+  EXPECT_EQ(module_params<SolidBodyKeys>(s.bodies[0].params).hg_xi, 0);
   EXPECT_DOUBLE_EQ(s.bodies[0].as_epsilon, 0.3);
   EXPECT_DOUBLE_EQ(s.bodies[0].as_n, 4);
 }
 
 TEST(StudyVariants, HourglassKeepsTheScenesOwnControl) {
   Scene s = with("hourglass");
-  EXPECT_DOUBLE_EQ(body_params<SolidBodyKeys>(s.bodies[0].params).hg_xi,
+  EXPECT_DOUBLE_EQ(module_params<SolidBodyKeys>(s.bodies[0].params).hg_xi,
                    0.5);  // the plate's xi (MMB Table 2)
   EXPECT_EQ(s.bodies[0].as_epsilon, 0);
 }
