@@ -1,6 +1,7 @@
 #include "coupling/coupling_keys.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "scene/scene.hpp"

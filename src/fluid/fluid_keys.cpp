@@ -1,5 +1,7 @@
 #include "fluid/fluid_keys.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "fluid/fluid_material.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
@@ -66,6 +68,11 @@ std::shared_ptr<const ModuleParams> read_fluid_material(MapReader& r) {
 }
 
 }  // namespace
+
+nlohmann::json FluidMaterial::dump() const {
+  return {{"cavitation_pressure", cavitation_pressure},
+          {"background_pressure", background_pressure}};
+}
 
 nlohmann::json FluidBodyKeys::dump() const {
   return {{"shifting",

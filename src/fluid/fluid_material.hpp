@@ -22,10 +22,7 @@ struct FluidMaterial : ModuleParams {
   double pressure(const Material& m, double rho) const {
     return std::max(m.pressure(rho), cavitation_pressure) + background_pressure;
   }
-  nlohmann::json dump() const override {
-    return {{"cavitation_pressure", cavitation_pressure},
-            {"background_pressure", background_pressure}};
-  }
+  nlohmann::json dump() const override;
 };
 
 }  // namespace monosph

@@ -1,9 +1,16 @@
 #include "heat/heat_keys.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace monosph {
+
+nlohmann::json HeatBodyKeys::dump() const {
+  if (!(conductivity > 0)) return nlohmann::json::object();
+  return {{"heat_conduction", {{"conductivity", conductivity}}}};
+}
 
 ModuleKeys heat_keys() {
   return {HeatBodyKeys::module,

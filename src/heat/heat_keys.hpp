@@ -9,10 +9,7 @@ struct HeatBodyKeys : ModuleParams {
   double conductivity = 0;  // thermal conductivity k, W/(m K); 0: no conduction
   // Nothing for a body without conduction (the configuration of scenes without the key is as
   // before the module existed).
-  nlohmann::json dump() const override {
-    if (!(conductivity > 0)) return nlohmann::json::object();
-    return {{"heat_conduction", {{"conductivity", conductivity}}}};
-  }
+  nlohmann::json dump() const override;
 };
 
 ModuleKeys heat_keys();

@@ -1,9 +1,15 @@
 #include "rigid/cluster_keys.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace monosph {
+
+nlohmann::json ClusterBodyKeys::dump() const {
+  return {{"cluster_per_part", per_part}};
+}
 
 ModuleKeys cluster_keys() {
   return {ClusterBodyKeys::module,

@@ -7,7 +7,7 @@ namespace monosph {
 struct ClusterBodyKeys : ModuleParams {
   static constexpr const char* module = "clusters";
   bool per_part = false;  // one rigid cluster per part of a union shape (else one per body)
-  nlohmann::json dump() const override { return {{"cluster_per_part", per_part}}; }
+  nlohmann::json dump() const override;
 };
 
 ModuleKeys cluster_keys();

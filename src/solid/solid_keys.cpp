@@ -1,5 +1,7 @@
 #include "solid/solid_keys.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
 #include "solid/solid_material.hpp"

@@ -1,6 +1,8 @@
 // The solid module's material keys: `plasticity`, `damage`, `taylor_quinney`, `elasticity`.
 #include "solid/solid_material.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.hpp"
 #include "scene/scene_reader.hpp"
 
