@@ -20,7 +20,12 @@ json shape_json(const Shape& s) {
   return j;
 }
 
-// The generic keys, then each module's (merged: one object, keys sorted).
+// Each module's parameters merged into j (one object, keys sorted).
+void add_params(json& j, const ParamMap& params) {
+  for (const auto& [module, p] : params) j.update(p->dump());
+}
+
+// The generic keys, then each module's.
 json material_json(const Material& m) {
   json j = {{"name", m.name},
             {"density", m.density},
@@ -28,11 +33,11 @@ json material_json(const Material& m) {
             {"shear_modulus", m.shear_modulus},
             {"heat_capacity", m.heat_capacity},
             {"viscosity", m.viscosity}};
-  for (const auto& [module, params] : m.params) j.update(params->dump());
+  add_params(j, m.params);
   return j;
 }
 
-// The generic keys, then each module's (merged: one object, keys sorted).
+// The generic keys, then each module's.
 json body_json(const BodySpec& b) {
   json j = {{"name", b.name},
             {"phase", b.phase},
@@ -55,7 +60,7 @@ json body_json(const BodySpec& b) {
             {"fill_rest", b.fill_rest},
             {"fill_shells", b.fill_shells},
             {"angular_velocity", b.angular_velocity}};
-  for (const auto& [module, params] : b.params) j.update(params->dump());
+  add_params(j, b.params);
   return j;
 }
 
@@ -130,7 +135,7 @@ nlohmann::json scene_config(const Scene& s) {
             {"variables", s.variables},
             {"reorder_every", s.reorder_every},
             {"limits", {{"max_particles", s.max_particles}, {"max_memory", s.max_memory}}}};
-  for (const auto& [module, params] : s.params) j.update(params->dump());  // their sections
+  add_params(j, s.params);  // the modules' sections
   for (const auto& m : s.materials) j["materials"].push_back(material_json(m));
   for (const auto& b : s.bodies) j["bodies"].push_back(body_json(b));
   for (const auto& bc : s.boundaries) j["boundary_conditions"].push_back(boundary_json(bc));
