@@ -314,12 +314,12 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
   auto v = p.v();
   auto m = p.m();
   auto rho = p.rho();
-  auto bd = p.body();
   const std::size_t n = sim.owned();  // sums over owned particles, then over the ranks
   const Comm& comm = sim.comm();
   const int kdev = p.find("deviatoric_stress");
   std::span<Mat3> dev;
   if (kdev >= 0) dev = p.template view<Mat3>(kdev);
+  auto bd = p.body();
   std::vector<double> out;
   for (auto& it : items_) {
     const auto& s = it->spec;

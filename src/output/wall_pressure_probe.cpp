@@ -86,16 +86,17 @@ double WallPressureProbe<D>::sample(Simulation<D>& sim) const {
   auto x = p.x();
   auto m = p.m();
   auto rho = p.rho();
-  auto pr = p.p();
-  auto ph = p.phase();
-  auto pw = p.template view<double>(kpw_);
+  // a fluid particle's own pressure, a wall particle's extrapolated one (the Adami wall's field)
+  auto pressure = [ph = p.phase(), pr = p.p(), pw = p.template view<double>(kpw_)](std::size_t i) {
+    return ph[i] == kFluid ? pr[i] : pw[i];
+  };
   const Kernel<D>& W = sim.kernel();
   const double R = W.radius();
   const std::size_t np = pts_.size();
   std::vector<double> s(2 * np, 0.0);  // per point: sum p V W, sum V W
   for (std::size_t i = 0; i < sim.owned(); ++i) {
     if ((x[i] - centre_).squaredNorm() >= reach_ * reach_) continue;
-    const double v = m[i] / rho[i], pi = ph[i] == kFluid ? pr[i] : pw[i];
+    const double v = m[i] / rho[i], pi = pressure(i);
     for (std::size_t k = 0; k < np; ++k) {
       const double r = (x[i] - pts_[k]).norm();
       if (r >= R) continue;

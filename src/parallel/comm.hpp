@@ -1,8 +1,8 @@
 #pragma once
 // Comm: the ranks of an Open MPI run (one rank without mpirun). Every call is collective
 // unless said otherwise; with one rank they return their argument without touching MPI.
-#include <mpi.h>
-
+// <mpi.h> stays out of this header, which almost every file includes: the files that call MPI
+// themselves get the communicator from parallel/comm_mpi.hpp.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -24,7 +24,6 @@ class Comm {
   int size() const { return size_; }
   bool parallel() const { return size_ > 1; }
   bool root() const { return rank_ == 0; }
-  MPI_Comm raw() const { return comm_; }
   // Global reductions and broadcasts made so far (for the communication model).
   long collectives() const { return collectives_; }
   void count_collective() const { ++collectives_; }
@@ -52,7 +51,6 @@ class Comm {
   std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& send) const;
 
  private:
-  MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, size_ = 1;
   mutable long collectives_ = 0;
 };

@@ -8,7 +8,13 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "parallel/comm_mpi.hpp"
+
 namespace monosph {
+
+struct MpiRequests {
+  std::vector<MPI_Request> v;
+};
 
 namespace {
 // ---- packing: all fields of particles idx, field by field --------------------------------------
@@ -95,7 +101,11 @@ void geom_multi(void* data, int, int, int num, ZOLTAN_ID_PTR, ZOLTAN_ID_PTR lid,
 template <int D>
 Decomposition<D>::Decomposition(const Comm& comm, const Domain<D>& dom, double halo,
                                 double imbalance)
-    : comm_(comm), dom_(dom), halo_(halo), imbalance_(imbalance) {
+    : comm_(comm),
+      dom_(dom),
+      halo_(halo),
+      imbalance_(imbalance),
+      req_(std::make_unique<MpiRequests>()) {
   static bool initialised = false;
   if (!initialised) {
     float ver;
@@ -103,7 +113,7 @@ Decomposition<D>::Decomposition(const Comm& comm, const Domain<D>& dom, double h
       throw std::runtime_error("Zoltan_Initialize failed");
     initialised = true;
   }
-  zz_ = Zoltan_Create(comm_.raw());
+  zz_ = Zoltan_Create(mpi_comm(comm_));
   Zoltan_Set_Param(zz_, "DEBUG_LEVEL", "0");
   Zoltan_Set_Param(zz_, "LB_METHOD", "RCB");
   Zoltan_Set_Param(zz_, "NUM_GID_ENTRIES", "1");
@@ -259,13 +269,13 @@ void Decomposition<D>::exchange(Particles<D>& p, std::span<const int> fields) {
   auto t0 = std::chrono::steady_clock::now();
   std::size_t row = 0;  // bytes per particle
   for (int k : fields) row += static_cast<std::size_t>(p.field(k).ncomp) * 8;
-  auto& req = req_;  // kept: no allocation per exchange
+  auto& req = req_->v;  // kept: no allocation per exchange
   req.resize(2 * peers_.size());
   constexpr int tag = 23;
   for (std::size_t q = 0; q < peers_.size(); ++q) {
     rbuf_[q].resize(recv_count_[q] * row);
     MPI_Irecv(rbuf_[q].data(), static_cast<int>(rbuf_[q].size()), MPI_BYTE, peers_[q], tag,
-              comm_.raw(), &req[q]);
+              mpi_comm(comm_), &req[q]);
   }
   for (std::size_t q = 0; q < peers_.size(); ++q) {
     auto& b = sbuf_[q];
@@ -279,7 +289,7 @@ void Decomposition<D>::exchange(Particles<D>& p, std::span<const int> fields) {
       for (int i : send_[q]) std::memcpy(out, src + i * r, r), out += r;
     }
     stats_.halo_bytes += static_cast<double>(b.size());
-    MPI_Isend(b.data(), static_cast<int>(b.size()), MPI_BYTE, peers_[q], tag, comm_.raw(),
+    MPI_Isend(b.data(), static_cast<int>(b.size()), MPI_BYTE, peers_[q], tag, mpi_comm(comm_),
               &req[peers_.size() + q]);
   }
   const auto tw = std::chrono::steady_clock::now();

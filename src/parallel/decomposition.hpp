@@ -19,6 +19,8 @@ struct Zoltan_Struct;
 
 namespace monosph {
 
+struct MpiRequests;  // std::vector<MPI_Request> (decomposition.cpp): <mpi.h> stays out
+
 struct DecompositionStats {
   long rebalances = 0, migrated = 0;  // partitions computed, particles that changed rank
   long exchanges = 0;                 // calls of exchange() (halo refreshes)
@@ -65,7 +67,7 @@ class Decomposition {
   std::vector<std::vector<int>> send_;                // per peer: local indices sent
   std::vector<std::size_t> recv_first_, recv_count_;  // per peer: ghost range
   std::vector<std::vector<char>> sbuf_, rbuf_;
-  std::vector<MPI_Request> req_;
+  std::unique_ptr<MpiRequests> req_;
   DecompositionStats stats_;
 };
 

@@ -1,7 +1,6 @@
 #pragma once
 // A scene: everything a run needs, read from YAML and validated (key path, value, what is
 // allowed). Dimension-agnostic: vectors are std::vector<double> of length `dimension`.
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <functional>
