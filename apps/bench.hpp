@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,17 @@ int run_bench_suite(const BenchOptions& opt);
 // or of any scene at refined spacings, on each thread count, and neighbour-build time per
 // particle. Prints a table; optional JSON.
 int run_bench(const BenchOptions& opt);
+// STREAM triad bandwidth on `threads` threads over arrays of `bytes` in all (bench_memory.cpp).
+struct Bandwidth {
+  int threads;
+  std::size_t bytes;
+  double gb_per_s;
+};
+double triad_gb_per_s(int threads, std::size_t bytes);
+// At each thread count: arrays of 8 MiB (in the last-level cache of most machines), 512 MiB (in
+// main memory).
+std::vector<Bandwidth> memory_bandwidth(const std::vector<int>& threads);
+
 // InputError "bench: cannot write FILE" unless FILE (if given) can be written.
 void check_writable(const std::string& file);
 

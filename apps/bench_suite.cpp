@@ -1,6 +1,6 @@
 // `monosph bench --suite`: particle-steps per second of the five kinds of scene at several
-// sizes and thread counts, the share of the slowest pass, JSON and a row block appended to
-// docs/performance.md (commit and machine named).
+// sizes and thread counts, the share of the slowest pass, the machine's memory bandwidth, JSON and
+// a row block appended to docs/performance.md (commit and machine named).
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -66,6 +66,17 @@ int run_bench_suite(const BenchOptions& opt) {
     for (auto& k : cases) k.refine.resize(1);
   check_writable(opt.json);
   check_writable(opt.append);
+  // What a second thread can gain on arrays in the cache and in main memory (bench_memory.cpp).
+  const std::vector<Bandwidth> bw = memory_bandwidth(opt.threads);
+  nlohmann::json bw_rows = nlohmann::json::array();
+  std::string bw_line = "memory bandwidth (STREAM triad, GB/s):";
+  for (const auto& b : bw) {
+    bw_rows.push_back({{"threads", b.threads}, {"mib", b.bytes >> 20}, {"gb_per_s", b.gb_per_s}});
+    bw_line += fmt::format(" {} MiB on {} thread{} {:.1f};", b.bytes >> 20, b.threads,
+                           b.threads == 1 ? "" : "s", b.gb_per_s);
+  }
+  bw_line.back() = '\n';
+  fmt::print("{}", bw_line);
   nlohmann::json rows = nlohmann::json::array();
   fmt::print("{:<50} {:>9} {:>3} {:>6} {:>9} {:>13} {:>24}\n", "case", "particles", "thr", "steps",
              "wall [s]", "part-steps/s", "slowest pass (share)");
@@ -119,7 +130,11 @@ int run_bench_suite(const BenchOptions& opt) {
   if (!opt.json.empty()) {
     std::ofstream out(opt.json);
     if (!out) throw InputError("bench: cannot write " + opt.json);
-    out << nlohmann::json{{"suite", rows}, {"commit", commit}, {"machine", where}, {"date", date}}
+    out << nlohmann::json{{"suite", rows},
+                          {"memory_bandwidth", bw_rows},
+                          {"commit", commit},
+                          {"machine", where},
+                          {"date", date}}
                .dump(2)
         << "\n";
     fmt::print("written {}\n", opt.json);
@@ -129,6 +144,7 @@ int run_bench_suite(const BenchOptions& opt) {
     if (!md) throw InputError("bench: cannot append to " + opt.append);
     md << "\n### `monosph bench --suite`, " << date << " UTC, commit "
        << (commit.empty() ? "?" : commit) << ", " << where << "\n\n"
+       << bw_line << "\n"
        << "| case | particles | threads | steps | particle-steps/s | slowest pass (ns per "
           "particle-step) |\n|---|---|---|---|---|---|\n";
     for (const auto& r : rows) {

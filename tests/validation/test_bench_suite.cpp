@@ -30,12 +30,22 @@ TEST(BenchSuite, QuickSuiteMeasuresFiveKindsOfSceneAndAppendsARowBlock) {
     for (const char* pass : {"integration", "neighbours", "pair_cache", "sums", "forces"})
       EXPECT_TRUE(row["ns_per_particle_step_by_pass"].contains(pass)) << pass;
   }
+  // The machine's triad bandwidth in the cache (8 MiB) and in main memory (512 MiB).
+  ASSERT_EQ(j["memory_bandwidth"].size(), 2u);
+  for (const auto& b : j["memory_bandwidth"]) {
+    EXPECT_EQ(b["threads"], 1);
+    EXPECT_GT(b["gb_per_s"].get<double>(), 0.1) << b["mib"];
+  }
+  EXPECT_EQ(j["memory_bandwidth"][0]["mib"], 8);
+  EXPECT_EQ(j["memory_bandwidth"][1]["mib"], 512);
   std::ifstream in(md);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str().rfind("# Performance\n", 0), 0u);  // appended, not overwritten
   EXPECT_NE(text.str().find("### `monosph bench --suite`"), std::string::npos);
   EXPECT_NE(text.str().find("| 3D solid (Taylor bar) |"), std::string::npos);
+  EXPECT_NE(text.str().find("memory bandwidth (STREAM triad, GB/s): 8 MiB on 1 thread"),
+            std::string::npos);
 }
 
 }  // namespace
