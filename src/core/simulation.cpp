@@ -273,21 +273,15 @@ void Simulation<D>::refresh_pair_vectors() {
   // update, and so does the smallest pair distance that the min-distance guard checks. (Frozen
   // kernel factors with moving r_ij change the stiffness of the Eulerian hourglass-controlled
   // plate: it bends 20 % too far and leaves the domain; measured in cases/oscillating_plate.)
+  if (scene_.frozen_kernel) return;  // r_ij is formed from the positions where it is used
   auto x = p_.x();
   const std::size_t n = p_.size();
-  const std::array<V, Neighbours<D>::kShifts> shift = nb_.shifts();
-  const int* nbr = nb_.nbr_data();
-  const std::uint8_t* code = nb_.code_data();
   auto& pl = pairs_;
-  const std::size_t* slot = pair_slot_.data();
-  const bool refresh = !scene_.frozen_kernel;
   const Kernel<D> W = kernel_;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t q = pl.first[i]; q < pl.first[i] + pl.count[i]; ++q) {
-      pl.r[q] = x[i] - x[nbr[slot[q]]] - shift[code[slot[q]]];
-      if (refresh) W.wf(pl.r[q].squaredNorm(), pl.w[q], pl.f[q]);
-    }
+    for (std::size_t q = pl.first[i]; q < pl.first[i] + pl.count[i]; ++q)
+      W.wf(pl.r(x, i, q).squaredNorm(), pl.w[q], pl.f[q]);
 }
 
 template <int D>
@@ -304,7 +298,7 @@ void Simulation<D>::update_pair_cache(bool solid_rows_only) {
   pl.first.resize(n + 1);
   pl.count.resize(n);
   pl.j.resize(nb_.pairs());
-  pl.r.resize(nb_.pairs());
+  pl.code.resize(nb_.pairs());
   pl.w.resize(nb_.pairs());
   pl.f.resize(nb_.pairs());
   group_.resize(n);
@@ -316,7 +310,7 @@ void Simulation<D>::update_pair_cache(bool solid_rows_only) {
   std::size_t* __restrict first = pl.first.data();
   int* __restrict cnt = pl.count.data();
   int* __restrict pj = pl.j.data();
-  V* __restrict pr = pl.r.data();
+  std::uint8_t* __restrict pc = pl.code.data();
   double* __restrict pw = pl.w.data();
   double* __restrict pf = pl.f.data();
   const V* __restrict xs = x.data();
@@ -324,10 +318,7 @@ void Simulation<D>::update_pair_cache(bool solid_rows_only) {
   const int* __restrict nbr = nb.nbr_data();
   const std::uint8_t* __restrict code = nb.code_data();
   const std::array<V, Neighbours<D>::kShifts> shift = nb.shifts();
-  // Dual-criteria time stepping refreshes r_ij from the list entry of each kept pair.
-  const bool track = scene_.advection_cfl > 0;
-  if (track) pair_slot_.resize(nb_.pairs());
-  std::size_t* __restrict slot = pair_slot_.data();
+  pl.shift = shift;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;  // of every row: a rebuild may have reordered
@@ -346,9 +337,8 @@ void Simulation<D>::update_pair_cache(bool solid_rows_only) {
       if (r2 < best) best = r2, jb = j;
       // Branch-free compaction: the slot is written always and kept if inside the support.
       pj[q] = j;
-      pr[q] = r;
+      pc[q] = code[k];
       pw[q] = r2;
-      if (track) slot[q] = k;
       q += r2 < rs2;
     }
     // Kernel values of the kept pairs in a dense loop (the compiler vectorises the root and

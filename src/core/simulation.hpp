@@ -68,16 +68,25 @@ class Module {
 
 // Pairs within the kernel support at the current positions, rebuilt with every force evaluation
 // and valid until the next drift: for particle i, entries begin(i) <= k < end(i) hold the
-// neighbour j, r = x_i - x_j (periodic image included), W(r) and F(r) = W'(r)/r, so that
-// grad_i W_ij = F r. Every pair pass streams through these arrays.
+// neighbour j, its periodic image (shift code), W(r) and F(r) = W'(r)/r, so that
+// grad_i W_ij = F r. r = x_i - x_j is not stored: r(x, i, k) forms it from the positions, which
+// do not change before the next drift (it is the same expression, so the same bits, as the one
+// the list was built with). Every pair pass streams through j, code, w and f: 21 bytes per pair.
 template <int D>
 struct PairList {
   std::vector<std::size_t> first;  // n + 1 offsets (slots of the Verlet list)
   std::vector<int> count, j;
-  std::vector<Vec<D>> r;
+  std::vector<std::uint8_t> code;               // periodic image of j (Neighbours<D> shift code)
+  std::array<Vec<D>, D == 2 ? 9 : 27> shift{};  // the shift vector of each code
   std::vector<double> w, f;
   std::size_t begin(std::size_t i) const { return first[i]; }
   std::size_t end(std::size_t i) const { return first[i] + count[i]; }
+  // r_ij = x_i - x_j of entry k of row i, periodic image included; x: the positions.
+  template <class X>
+  Vec<D> r(const X& x, std::size_t i, std::size_t k) const {
+    return x[i] - x[j[k]] - shift[code[k]];
+  }
+  const Vec<D>& image(std::size_t k) const { return shift[code[k]]; }  // x_i - x_j - r_ij
 };
 
 struct BodyInfo {
@@ -262,7 +271,6 @@ class Simulation {
   double t_ = 0, dt_ = 0, dt0_ = 0;
   double t_configuration_ = -1;  // dual-criteria: time of the next configuration update
   long configuration_updates_ = 0;
-  std::vector<std::size_t> pair_slot_;  // list entry of each kept pair (dual-criteria only)
   long step_ = 0;
   double min_r_ = 0;
   PairList<D> pairs_;

@@ -41,6 +41,7 @@ SphEquations<D>::SphEquations(Simulation<D>& sim, bool store_velocity_gradient) 
 template <int D>
 void SphEquations<D>::sums(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& pw = pl.w;
   const auto& pf = pl.f;
@@ -61,7 +62,7 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
-      const Vec<D>& r = pl.r[k];
+      const Vec<D> r = pl.r(x, i, k);
       s += vol[j] * pw[k];
       // (x_j - x_i) (x) grad_i W_ij = (-r) (x) (F r)   (MMB Eq. 9)
       b.noalias() -= (vol[j] * pf[k]) * (r * r.transpose());
@@ -75,6 +76,7 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
 template <int D>
 void SphEquations<D>::rates(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& pf = pl.f;
   const auto& grp = sim.group();
@@ -107,7 +109,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
-      const Vec<D>& r = pl.r[k];
+      const Vec<D> r = pl.r(x, i, k);
       const double vj = vol[j];
       g.noalias() +=
           (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
@@ -150,6 +152,7 @@ void SphEquations<D>::constitutive(Simulation<D>& sim) {
 template <int D>
 void SphEquations<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& W = sim.kernel();
   const auto& pw = pl.w;
@@ -219,7 +222,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
-      const Vec<D>& r = pl.r[k];
+      const Vec<D> r = pl.r(x, i, k);
       const Vec<D> gw = pf[k] * r;  // grad_i W_ij
       // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij (or corrected)
       accs.noalias() += wpair_[j] * ((sig_[i] + sig_[j]) * gw);

@@ -72,13 +72,14 @@ double ContactModule<D>::potential_energy(Simulation<D>& sim) {
   auto m = p.m();
   auto mt = p.material();
   auto cl = p.template view<std::int64_t>(kcl_);
+  auto x = p.x();
   double e = 0;
   for (std::size_t i = 0; i < sim.owned(); ++i)
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (!contact_pair(ph[i], ph[j], cl[i], cl[j])) continue;
-      e += 0.5 * pair_energy(pl.r[k].norm(), static_cast<int>(mt[i]), static_cast<int>(mt[j]), m[i],
-                             m[j]);
+      e += 0.5 * pair_energy(pl.r(x, i, k).norm(), static_cast<int>(mt[i]), static_cast<int>(mt[j]),
+                             m[i], m[j]);
     }
   return e;
 }
@@ -88,6 +89,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
   const auto& pl = sim.pairs();
   auto ph = p.phase();
+  auto x = p.x();
   auto v = p.v();
   auto a = p.a();
   auto m = p.m();
@@ -115,7 +117,8 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
       const int j = pl.j[k];
       const auto pj = ph[j];
       if (!contact_pair(pi, pj, cl[i], cl[j])) continue;
-      const double r = pl.r[k].norm();
+      const Vec<D> rij = pl.r(x, i, k);
+      const double r = rij.norm();
       // Time-step stiffness k/m of this particle, at an overlap of at least 0.1 R.
       if (pi != kWall) {
         double kn;
@@ -134,7 +137,7 @@ void ContactModule<D>::forces(Simulation<D>& sim) {
       }
       if (pi == kRigid && pj != kRigid && r < release) near_[i] = 1;
       if (r >= dc) continue;
-      const Vec<D> nrm = pl.r[k] / r;  // from j to i
+      const Vec<D> nrm = rij / r;  // from j to i
       double fn = pair_force(r, static_cast<int>(mt[i]), static_cast<int>(mt[j]), m[i], m[j]);
       if (hertz && zeta > 0) {
         // Normal dashpot -2 zeta sqrt(k m*) v_n, k = dF/d(delta) = 1.5 F/delta (Tsuji et al. 1992).

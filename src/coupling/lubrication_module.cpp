@@ -78,6 +78,7 @@ void LubricationModule<D>::find_films(Simulation<D>& sim) {
   auto ph = p.phase();
   auto bd = p.body();
   auto v = p.v();
+  auto x = p.x();
   auto cl = p.template view<std::int64_t>(kcl_);
   const double dp = sim.dp(), inf = std::numeric_limits<double>::infinity();
   for (auto& f : film_) f = Film{inf, -inf, 0, 0, 0, -1};
@@ -86,8 +87,9 @@ void LubricationModule<D>::find_films(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (!film_partner(ph[j]) || (ph[j] == kRigid && cl[j] == cl[i])) continue;
-      const double r = pl.r[k].norm(), h = r - dp;
-      const double U = -(v[i] - v[j]).dot(pl.r[k]) / r;  // > 0: closing
+      const Vec<D> rij = pl.r(x, i, k);
+      const double r = rij.norm(), h = r - dp;
+      const double U = -(v[i] - v[j]).dot(rij) / r;  // > 0: closing
       if (h < f.gap || (h == f.gap && U > f.speed)) {
         f.gap = h, f.speed = U, f.partner = object(bd[j], cl[j]);
         const double a = radius_[cl[i]];
@@ -138,6 +140,7 @@ void LubricationModule<D>::forces(Simulation<D>& sim) {
   const auto& pl = sim.pairs();
   auto ph = p.phase();
   auto bd = p.body();
+  auto x = p.x();
   auto v = p.v();
   auto a = p.a();
   auto m = p.m();
@@ -151,7 +154,7 @@ void LubricationModule<D>::forces(Simulation<D>& sim) {
   for (std::size_t i : rigid_)
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
-      const double h = pl.r[k].norm() - dp;
+      const double h = pl.r(x, i, k).norm() - dp;
       if (film_partner(ph[j]) && in_film(i, j, h))
         film_[cl[i]].weight += 1.0 / std::pow(std::max(h, hmin_), 2);
     }
@@ -173,7 +176,8 @@ void LubricationModule<D>::forces(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (!film_partner(ph[j])) continue;
-      const double r = pl.r[k].norm(), h = r - dp;
+      const Vec<D> rij = pl.r(x, i, k);
+      const double r = rij.norm(), h = r - dp;
       // The film this pair belongs to: of i's cluster or of j's (two clusters: the lower index).
       const bool by_i = ph[i] == kRigid && in_film(i, j, h);
       const bool by_j = ph[j] == kRigid && in_film(j, static_cast<int>(i), h);
@@ -183,7 +187,7 @@ void LubricationModule<D>::forces(Simulation<D>& sim) {
       const std::size_t ri = rigid_side ? i : std::size_t(j), pj = rigid_side ? j : i;
       const double mi = mass_[c], mj = ph[pj] == kWall ? 0.0 : mass_of(static_cast<int>(pj));
       const double mstar = mj > 0 ? mi * mj / (mi + mj) : mi;
-      const Vec<D> n = (rigid_side ? 1.0 : -1.0) * pl.r[k] / r;  // partner -> cluster particle
+      const Vec<D> n = (rigid_side ? 1.0 : -1.0) * rij / r;  // partner -> cluster particle
       const double vn = -(v[ri] - v[pj]).dot(n);
       const double f = share(film_[c], h, vn, mstar, dt);
       fi += (rigid_side ? f : -f) * n;

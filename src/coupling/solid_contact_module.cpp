@@ -53,6 +53,7 @@ void SolidContactModule<D>::forces(Simulation<D>& sim) {
   const auto& pl = sim.pairs();
   const auto& grp = sim.group();
   auto ph = p.phase();
+  auto x = p.x();
   auto v = p.v();
   auto a = p.a();
   auto m = p.m();
@@ -72,7 +73,8 @@ void SolidContactModule<D>::forces(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (!contact_pair(ph[i], ph[j], grp[i], grp[j])) continue;
-      const double r = pl.r[k].norm(), es = estar_[idx(mt[i], mt[j])];
+      const Vec<D> rij = pl.r(x, i, k);
+      const double r = rij.norm(), es = estar_[idx(mt[i], mt[j])];
       // Time-step stiffness k/m of this particle for every pair within the support (an
       // approaching pair), at an overlap of at least 0.1 R.
       const double kn = hertz_stiffness(es, rstar, std::max(dc - r, delta_floor)) / depth_;
@@ -81,7 +83,7 @@ void SolidContactModule<D>::forces(Simulation<D>& sim) {
         if (id[i] < id[j]) ++nnear;  // each pair once, on any number of ranks
       }
       if (r >= dc || !(r > 0)) continue;  // repulsive only: no force at or beyond d_c
-      const Vec<D> nrm = pl.r[k] / r;     // from j to i
+      const Vec<D> nrm = rij / r;         // from j to i
       const double ms = m[i] * m[j] / (m[i] + m[j]);
       double fn = pair_force(r, static_cast<int>(mt[i]), static_cast<int>(mt[j]));
       if (zeta > 0) {
@@ -124,13 +126,15 @@ double SolidContactModule<D>::potential_energy(Simulation<D>& sim) {
   const auto& grp = sim.group();
   auto ph = p.phase();
   auto mt = p.material();
+  auto x = p.x();
   double e = 0;
   const std::size_t own = std::min(sim.owned(), pl.count.size());
   for (std::size_t i = 0; i < own; ++i)
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (contact_pair(ph[i], ph[j], grp[i], grp[j]))
-        e += 0.5 * pair_energy(pl.r[k].norm(), static_cast<int>(mt[i]), static_cast<int>(mt[j]));
+        e += 0.5 *
+             pair_energy(pl.r(x, i, k).norm(), static_cast<int>(mt[i]), static_cast<int>(mt[j]));
     }
   return e;
 }

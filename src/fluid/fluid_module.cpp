@@ -82,6 +82,7 @@ void FluidModule<D>::on_create(Simulation<D>& sim) {
 template <int D>
 void FluidModule<D>::sums(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& vol = sim.volumes();
   const auto& mats = sim.materials();
@@ -116,7 +117,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
       Vec<D> graw = Vec<D>::Zero();
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
-        const Vec<D>& r = pl.r[k];
+        const Vec<D> r = pl.r(x, i, k);
         const double f = vol[j] * pl.f[k];
         const Mat<D> rr = -f * (r * r.transpose());  // V_j (x_j - x_i) (x) grad_i W_ij
         ba += rr;
@@ -137,7 +138,7 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
         const int j = pl.j[k];
         if (ph[j] != kFluid) continue;
         const double w = pl.w[k];
-        const Vec<D>& r = pl.r[k];  // r_wf = x_w - x_f
+        const Vec<D> r = pl.r(x, i, k);  // r_wf = x_w - x_f
         sw += w;
         sp += (pr[j] + rho[j] * gb[bd[j]].dot(r)) * w;  // g of the fluid's body
         srw += (rho[j] * w) * r;
@@ -194,6 +195,7 @@ void FluidModule<D>::check_no_free_surface(Simulation<D>& sim) {
 template <int D>
 void FluidModule<D>::rates(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& vol = sim.volumes();
   const auto& bodies = sim.bodies();
@@ -215,7 +217,7 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
     double div = 0, diff = 0, ale_rate = 0;
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
-      const Vec<D>& r = pl.r[k];
+      const Vec<D> r = pl.r(x, i, k);
       const double f = pl.f[k], vj = vol[j];
       div += vj * f * (v[j] - v[i]).dot(r);  // wall-like j: its own (body) velocity
       if (delta > 0 && ph[j] == kFluid)
@@ -234,6 +236,7 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
 template <int D>
 void FluidModule<D>::forces(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& vol = sim.volumes();
   const auto& bodies = sim.bodies();
@@ -279,7 +282,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
       Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), ale = Vec<D>::Zero();
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
-        const Vec<D>& r = pl.r[k];
+        const Vec<D> r = pl.r(x, i, k);
         const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij
         const double vj = vol[j];
         const bool fj = ph[j] == kFluid;
@@ -306,7 +309,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         if (ph[j] != kFluid) continue;
-        const Vec<D>& r = pl.r[k];
+        const Vec<D> r = pl.r(x, i, k);
         const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij = -grad_j W_ji
         const double vv = vol[i] * vol[j];
         f -= ((pr[j] + pw[i]) * vv) * gw;
@@ -331,6 +334,7 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
 template <int D>
 void FluidModule<D>::shift_velocities(Simulation<D>& sim) {
   auto& p = sim.particles();
+  auto x = p.x();
   const auto& pl = sim.pairs();
   const auto& vol = sim.volumes();
   auto ph = p.phase();
@@ -349,7 +353,7 @@ void FluidModule<D>::shift_velocities(Simulation<D>& sim) {
     const bool on = b.shift_speed > 0 || b.shift_pb > 0;
     for (std::size_t k = pl.begin(i); on && k < pl.end(i); ++k) {
       const int j = pl.j[k];
-      const Vec<D> gw = pl.f[k] * pl.r[k];  // grad_i W_ij
+      const Vec<D> gw = pl.f[k] * pl.r(x, i, k);  // grad_i W_ij
       const double vj = vol[j];
       if (b.shift_speed > 0) {
         const double q = pl.w[k] / wdp, q2 = q * q;  // (W/W(dp))^n; n = 4 without pow

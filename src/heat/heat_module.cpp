@@ -51,6 +51,7 @@ void HeatModule<D>::rates(Simulation<D>& sim) {
   auto T = p.template view<double>(kT_);
   auto dT = p.template view<double>(kdT_);
   auto m = p.m();
+  auto x = p.x();
   auto rho = p.rho();
   auto bd = p.body();
   auto mt = p.material();
@@ -64,7 +65,7 @@ void HeatModule<D>::rates(Simulation<D>& sim) {
       const int j = pl.j[k];
       const double kj = k_[bd[j]];
       if (!(kj > 0)) continue;
-      const double r2 = pl.r[k].squaredNorm();
+      const double r2 = pl.r(x, i, k).squaredNorm();
       rate +=
           4 * m[j] / rho[j] * (ki * kj / (ki + kj)) * (T[i] - T[j]) * pl.f[k] * r2 / (r2 + eta2);
     }

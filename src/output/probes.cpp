@@ -238,6 +238,7 @@ double penetration(Simulation<D>& sim, InBody in_body, int target) {
   // rest are dp apart (0); a Hertz overlap or a fluid particle pushed into the solid shows.
   const auto& pl = sim.pairs();
   auto ph = p.phase();
+  auto x = p.x();
   const double dp = sim.dp();
   double worst = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -246,7 +247,7 @@ double penetration(Simulation<D>& sim, InBody in_body, int target) {
       const int j = pl.j[k];
       if (target < 0 ? ph[j] != kSolid : bd[j] != target) continue;
       if (bd[j] == bd[i]) continue;
-      worst = std::max(worst, dp - pl.r[k].norm());
+      worst = std::max(worst, dp - pl.r(x, i, k).norm());
     }
   }
   return comm.max(worst);

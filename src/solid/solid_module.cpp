@@ -5,7 +5,6 @@
 #include <limits>
 #include <numbers>
 
-#include "core/hertz.hpp"
 #include "core/sph_equations.hpp"
 #include "elasticity.hpp"
 #include "plasticity.hpp"
@@ -122,16 +121,20 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
   for (std::size_t i = 0; i < n; ++i)
     if (is_solid(ph[i]) && !mat_[mt[i]].neo_hookean)
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
-  if (klap_ >= 0) accumulate_laplacian(sim, dt);
+  if (klap_ >= 0) {  // I_i += dt dI_i/dt (laplacian_rate)
+    auto I = p.template view<Vec<D>>(klap_);
+    for (std::size_t i = 0; i < lap_rate_.size(); ++i) I[i] += dt * lap_rate_[i];
+  }
   if (any_plastic_) plastic_return(sim, dt);
   if (any_erosion_) erode(sim);
 }
 
 template <int D>
-void SolidModule<D>::accumulate_laplacian(Simulation<D>& sim, double dt) {
+void SolidModule<D>::laplacian_rate(Simulation<D>& sim) {
   // Zhang et al. 2024, Eq. 19-20: I_i += dt sum_j (e_ij . v_ij / r_ij) grad_i W_ij V_j with the
   // half-step velocities and the pairs of the last force pass (the midpoint rule over the step,
-  // as the stress update). The shear acceleration 2 zeta G / rho_i I_i is added in `forces`.
+  // as the stress update); `drift` adds it. The shear acceleration 2 zeta G / rho_i I_i is added
+  // in `forces`.
   auto& p = sim.particles();
   const auto& pl = sim.pairs();
   const auto& grp = sim.group();
@@ -139,9 +142,10 @@ void SolidModule<D>::accumulate_laplacian(Simulation<D>& sim, double dt) {
   auto ph = p.phase();
   auto bd = p.body();
   auto v = p.v();
-  auto I = p.template view<Vec<D>>(klap_);
+  auto x = p.x();
   const auto& bodies = sim.bodies();
   const std::size_t n = std::min(p.size(), pl.count.size());
+  lap_rate_.assign(n, Vec<D>::Zero());
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i]) || bodies[bd[i]].formulation != 2) continue;
@@ -149,10 +153,10 @@ void SolidModule<D>::accumulate_laplacian(Simulation<D>& sim, double dt) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != grp[i] || !is_solid(ph[j])) continue;
-      const Vec<D>& r = pl.r[k];  // x_i - x_j = r_ij e_ij
+      const Vec<D> r = pl.r(x, i, k);  // x_i - x_j = r_ij e_ij
       lap += (vol[j] * pl.f[k] * r.dot(v[i] - v[j]) / r.squaredNorm()) * r;  // f r = grad_i W
     }
-    I[i] += dt * lap;
+    lap_rate_[i] = lap;
   }
 }
 
@@ -288,6 +292,7 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
 template <int D>
 void SolidModule<D>::rates(Simulation<D>& sim) {
   if (tl_) tl_->rates(sim);  // L = Fdot F^-1 (SphEquations::rates skips these particles)
+  if (klap_ >= 0) laplacian_rate(sim);
 }
 
 template <int D>
@@ -314,6 +319,7 @@ void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
   const auto& pw = pl.w;
   auto ph = p.phase();
   auto bd = p.body();
+  auto x = p.x();
   auto X0 = p.template view<Vec<D>>(kX0_);
   auto dis = p.template view<double>(kdis_);
   std::span<Mat<D>> fls;
@@ -329,7 +335,7 @@ void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (bd[j] != bd[i]) continue;
-      const Vec<D> d = -pl.r[k];
+      const Vec<D> d = -pl.r(x, i, k);
       const Vec<D> X = initial_difference(X0[j], X0[i]);
       A.noalias() += pw[k] * d * X.transpose();
       B.noalias() += pw[k] * X * X.transpose();
@@ -345,7 +351,7 @@ void SolidModule<D>::fit_deformation(Simulation<D>& sim, bool store_fit) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (bd[j] != bd[i]) continue;
-      const Vec<D> d = -pl.r[k];
+      const Vec<D> d = -pl.r(x, i, k);
       res += pw[k] * (d - F * initial_difference(X0[j], X0[i])).squaredNorm();
     }
     dis[i] = std::sqrt(res / den) / dp;
@@ -491,9 +497,9 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (bd[j] != bd[i]) continue;
-      const Vec<D> d = -pl.r[k];  // x_ij = x_j - x_i (Ganzenmueller's convention)
+      const Vec<D> d = -pl.r(x, i, k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
       const double w = pw[k];
-      const Vec<D> X = inter  ? Vec<D>(Xr[j] + (x[i] - x[j] - pl.r[k]) - Xr[i])
+      const Vec<D> X = inter  ? Vec<D>(Xr[j] + (x[i] - x[j] + d) - Xr[i])  // + the image shift
                        : wrap ? initial_difference(X0[j], X0[i])
                               : Vec<D>(X0[j] - X0[i]);
       const double X2 = X.squaredNorm();
@@ -528,48 +534,6 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   }
   if (tl_) tl_->forces(sim, omega2_, hge);  // G15 Eq. 24 and 32
   if (any_self_contact_) self_contact(sim);
-}
-
-template <int D>
-void SolidModule<D>::self_contact(Simulation<D>& sim) {
-  // Hertz contact of two spheres of diameter d_c = self_contact dp (Johnson 1985, Eq. 4.23):
-  // F = 4/3 E* sqrt(R*) delta^1.5, delta = d_c - r, R* = d_c/4, 1/E* = 2 (1 - nu^2)/E; per depth
-  // dp in 2D. Each particle sums its own side of every pair: exactly opposite forces.
-  auto& p = sim.particles();
-  const auto& pl = sim.pairs();
-  auto a = p.a();
-  auto m = p.m();
-  auto ph = p.phase();
-  auto bd = p.body();
-  auto mt = p.material();
-  const auto& mats = sim.materials();
-  const double dp = sim.dp(), depth = D == 2 ? dp : 1.0;
-  const std::size_t n = p.size();
-  contact_w2_.assign(n, 0.0);
-#pragma omp parallel for schedule(runtime)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (ph[i] != kSolid) continue;
-    const double dc = keys_[bd[i]].self_contact * dp;
-    if (!(dc > 0)) continue;
-    const Material& mat = mats[mt[i]];
-    const double K = mat.bulk_modulus, mu = mat.shear_modulus;
-    const double nu = (3 * K - 2 * mu) / (2 * (3 * K + mu));
-    const double estar = mat.youngs_modulus() / (2 * (1 - nu * nu)), rstar = 0.25 * dc;
-    Vec<D> f = Vec<D>::Zero();
-    double kn = 0;
-    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
-      const int j = pl.j[k];
-      if (bd[j] != bd[i]) continue;
-      const double r = pl.r[k].norm();
-      if (r >= dc || r == 0) continue;
-      const double delta = dc - r;
-      f += (hertz_force(estar, rstar, delta) / depth / r) * pl.r[k];
-      // dF/d(delta), at an overlap of at least 0.1 R (as the grain contact)
-      kn += hertz_stiffness(estar, rstar, std::max(delta, 0.05 * dc)) / depth;
-    }
-    a[i] += f / m[i];
-    contact_w2_[i] = kn / m[i];
-  }
 }
 
 template <int D>

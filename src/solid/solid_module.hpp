@@ -62,7 +62,7 @@ class SolidModule : public Module<D> {
   bool any_self_contact_ = false;
   std::vector<double> contact_w2_;  // self-contact stiffness / mass per particle (last forces)
   // Non-hourglass formulation (Zhang et al. 2024): time integral of the Laplacian of v.
-  void accumulate_laplacian(Simulation<D>& sim, double dt);
+  void laplacian_rate(Simulation<D>& sim);  // dI/dt into lap_rate_ (rates: before the drift)
   int klap_ = -1;
   int kep_ = -1, kepr_ = -1, kT_ = -1, kdmg_ = -1, ksy_ = -1;
   bool any_plastic_ = false, any_damage_ = false, any_erosion_ = false;
@@ -77,7 +77,8 @@ class SolidModule : public Module<D> {
   std::vector<std::size_t> rstart_;
   std::vector<int> rj_;
   std::vector<Vec<D>> rshift_, rg_;
-  std::vector<double> omega2_;  // hourglass spring frequency bound per particle (last forces)
+  std::vector<Vec<D>> lap_rate_;  // Zhang et al. 2024, Eq. 19: dI_i/dt of the step
+  std::vector<double> omega2_;    // hourglass spring frequency bound per particle (last forces)
   Vec<D> box_;
   std::array<bool, D> periodic_{};
 };

@@ -30,6 +30,7 @@ struct Rig {
   std::vector<Vec<2>> shear_acceleration(F field, double dt) {
     auto& p = sim->particles();
     for (std::size_t i = 0; i < p.size(); ++i) p.v()[i] = field(p.x()[i]);
+    solid->rates(*sim);  // dI/dt from the pairs at the current positions (a step's rates pass)
     solid->drift(*sim, dt);
     for (auto& a : p.a()) a.setZero();
     solid->forces(*sim);
