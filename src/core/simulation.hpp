@@ -76,8 +76,8 @@ template <int D>
 struct PairList {
   std::vector<std::size_t> first;  // n + 1 offsets (slots of the Verlet list)
   std::vector<int> count, j;
-  std::vector<std::uint8_t> code;               // periodic image of j (Neighbours<D> shift code)
-  std::array<Vec<D>, D == 2 ? 9 : 27> shift{};  // the shift vector of each code
+  std::vector<std::uint8_t> code;  // periodic image of j (Neighbours<D> shift code)
+  std::array<Vec<D>, Neighbours<D>::kShifts> shift{};  // the shift vector of each code
   std::vector<double> w, f;
   std::size_t begin(std::size_t i) const { return first[i]; }
   std::size_t end(std::size_t i) const { return first[i] + count[i]; }
@@ -86,7 +86,19 @@ struct PairList {
   Vec<D> r(const X& x, std::size_t i, std::size_t k) const {
     return x[i] - x[j[k]] - shift[code[k]];
   }
-  const Vec<D>& image(std::size_t k) const { return shift[code[k]]; }  // x_i - x_j - r_ij
+  // The same for the entries of one row, its values held in registers across the pair loop.
+  struct Row {
+    Vec<D> xi;
+    const Vec<D>* x;
+    const int* j;
+    const std::uint8_t* code;
+    const Vec<D>* shift;
+    Vec<D> r(std::size_t k) const { return xi - x[j[k]] - shift[code[k]]; }
+  };
+  template <class X>
+  Row row(const X& x, std::size_t i) const {
+    return {x[i], x.data(), j.data(), code.data(), shift.data()};
+  }
 };
 
 struct BodyInfo {

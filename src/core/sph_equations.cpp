@@ -57,12 +57,13 @@ void SphEquations<D>::sums(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const int gi = grp[i];
+    const auto row = pl.row(x, i);
     double s = vol[i] * w0;
     Mat<D> b = Mat<D>::Zero();
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
-      const Vec<D> r = pl.r(x, i, k);
+      const Vec<D> r = row.r(k);
       s += vol[j] * pw[k];
       // (x_j - x_i) (x) grad_i W_ij = (-r) (x) (F r)   (MMB Eq. 9)
       b.noalias() -= (vol[j] * pf[k]) * (r * r.transpose());
@@ -104,12 +105,13 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const int gi = grp[i];
+    const auto row = pl.row(x, i);
     Mat<D> g = Mat<D>::Zero();
     double diff = 0;
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
-      const Vec<D> r = pl.r(x, i, k);
+      const Vec<D> r = row.r(k);
       const double vj = vol[j];
       g.noalias() +=
           (v[j] - v[i]) * (vj * pf[k] * r).transpose();  // sum V_j (v_j - v_i) (x) grad W
@@ -217,12 +219,13 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   for (std::size_t i = 0; i < n; ++i) {
     if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
     const int gi = grp[i];
+    const auto row = pl.row(x, i);
     const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
     Vec<D> acc = Vec<D>::Zero(), accs = Vec<D>::Zero();
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
-      const Vec<D> r = pl.r(x, i, k);
+      const Vec<D> r = row.r(k);
       const Vec<D> gw = pf[k] * r;  // grad_i W_ij
       // MMB Eq. 11: m_j [Sigma_i/(rho_i^2 S_i) + Sigma_j/(rho_j^2 S_j)] grad_i W_ij (or corrected)
       accs.noalias() += wpair_[j] * ((sig_[i] + sig_[j]) * gw);

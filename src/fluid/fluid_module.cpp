@@ -115,9 +115,10 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
     if (ph[i] == kFluid) {
       Mat<D> bf = Mat<D>::Zero(), ba = Mat<D>::Zero();
       Vec<D> graw = Vec<D>::Zero();
+      const auto row = pl.row(x, i);
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
-        const Vec<D> r = pl.r(x, i, k);
+        const Vec<D> r = row.r(k);
         const double f = vol[j] * pl.f[k];
         const Mat<D> rr = -f * (r * r.transpose());  // V_j (x_j - x_i) (x) grad_i W_ij
         ba += rr;
@@ -134,11 +135,12 @@ void FluidModule<D>::sums(Simulation<D>& sim) {
       // sum_f W.
       double sw = 0, sp = 0;
       Vec<D> srw = Vec<D>::Zero(), sv = Vec<D>::Zero();
+      const auto row = pl.row(x, i);
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         if (ph[j] != kFluid) continue;
         const double w = pl.w[k];
-        const Vec<D> r = pl.r(x, i, k);  // r_wf = x_w - x_f
+        const Vec<D> r = row.r(k);  // r_wf = x_w - x_f
         sw += w;
         sp += (pr[j] + rho[j] * gb[bd[j]].dot(r)) * w;  // g of the fluid's body
         srw += (rho[j] * w) * r;
@@ -215,9 +217,10 @@ void FluidModule<D>::rates(Simulation<D>& sim) {
     const double delta = bodies[bd[i]].delta;
     const bool ale = keys_[bd[i]].shift_consistent;
     double div = 0, diff = 0, ale_rate = 0;
+    const auto row = pl.row(x, i);
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
-      const Vec<D> r = pl.r(x, i, k);
+      const Vec<D> r = row.r(k);
       const double f = pl.f[k], vj = vol[j];
       div += vj * f * (v[j] - v[i]).dot(r);  // wall-like j: its own (body) velocity
       if (delta > 0 && ph[j] == kFluid)
@@ -280,9 +283,10 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
       const FluidBodyKeys& b = keys_[bd[i]];
       const double nui = nu_of(i), ali = alpha_of(i);
       Vec<D> ap = Vec<D>::Zero(), av = Vec<D>::Zero(), ale = Vec<D>::Zero();
+      const auto row = pl.row(x, i);
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
-        const Vec<D> r = pl.r(x, i, k);
+        const Vec<D> r = row.r(k);
         const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij
         const double vj = vol[j];
         const bool fj = ph[j] == kFluid;
@@ -306,10 +310,11 @@ void FluidModule<D>::forces(Simulation<D>& sim) {
       // The reaction of every fluid-pair force above (exactly opposite): force on particle i.
       Vec<D> f = Vec<D>::Zero();
       const bool noslip = keys_[bd[i]].no_slip;
+      const auto row = pl.row(x, i);
       for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
         const int j = pl.j[k];
         if (ph[j] != kFluid) continue;
-        const Vec<D> r = pl.r(x, i, k);
+        const Vec<D> r = row.r(k);
         const Vec<D> gw = pl.f[k] * r;  // grad_i W_ij = -grad_j W_ji
         const double vv = vol[i] * vol[j];
         f -= ((pr[j] + pw[i]) * vv) * gw;
@@ -351,9 +356,10 @@ void FluidModule<D>::shift_velocities(Simulation<D>& sim) {
     Vec<D> sh = Vec<D>::Zero(), gl = Vec<D>::Zero(), tv = Vec<D>::Zero();  // gl: sum V_j grad W
     bool near_surface = lam[i] <= 0.75;
     const bool on = b.shift_speed > 0 || b.shift_pb > 0;
+    const auto row = pl.row(x, i);
     for (std::size_t k = pl.begin(i); on && k < pl.end(i); ++k) {
       const int j = pl.j[k];
-      const Vec<D> gw = pl.f[k] * pl.r(x, i, k);  // grad_i W_ij
+      const Vec<D> gw = pl.f[k] * row.r(k);  // grad_i W_ij
       const double vj = vol[j];
       if (b.shift_speed > 0) {
         const double q = pl.w[k] / wdp, q2 = q * q;  // (W/W(dp))^n; n = 4 without pow

@@ -494,10 +494,11 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
     Vec<D> f = Vec<D>::Zero();
     double kappa = 0;   // sum_j V_j W_ij E_ij / X_ij^2: the pair spring stiffnesses / (V_i xi)
     double stored = 0;  // sum_j V_j W_ij E_ij (eps . x_ij)^2 / (X_ij^2 r_ij^2)
+    const auto row = pl.row(x, i);
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (bd[j] != bd[i]) continue;
-      const Vec<D> d = -pl.r(x, i, k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
+      const Vec<D> d = -row.r(k);  // x_ij = x_j - x_i (Ganzenmueller's convention)
       const double w = pw[k];
       const Vec<D> X = inter  ? Vec<D>(Xr[j] + (x[i] - x[j] + d) - Xr[i])  // + the image shift
                        : wrap ? initial_difference(X0[j], X0[i])
