@@ -81,12 +81,8 @@ struct PairList {
   std::vector<double> w, f;
   std::size_t begin(std::size_t i) const { return first[i]; }
   std::size_t end(std::size_t i) const { return first[i] + count[i]; }
-  // r_ij = x_i - x_j of entry k of row i, periodic image included; x: the positions.
-  template <class X>
-  Vec<D> r(const X& x, std::size_t i, std::size_t k) const {
-    return x[i] - x[j[k]] - shift[code[k]];
-  }
-  // The same for the entries of one row, its values held in registers across the pair loop.
+  // r_ij = x_i - x_j of the entries k of row i, periodic image included (x: the positions); a
+  // Row holds x_i and the arrays in registers across a pair loop.
   struct Row {
     Vec<D> xi;
     const Vec<D>* x;
@@ -98,6 +94,10 @@ struct PairList {
   template <class X>
   Row row(const X& x, std::size_t i) const {
     return {x[i], x.data(), j.data(), code.data(), shift.data()};
+  }
+  template <class X>
+  Vec<D> r(const X& x, std::size_t i, std::size_t k) const {
+    return row(x, i).r(k);
   }
 };
 

@@ -123,6 +123,7 @@ void SolidModule<D>::drift(Simulation<D>& sim, double dt) {
       S[i] = update_deviatoric(S[i], pad33<D>(L[i]), mats[mt[i]].shear_modulus, dt);
   if (klap_ >= 0) {  // I_i += dt dI_i/dt (laplacian_rate)
     auto I = p.template view<Vec<D>>(klap_);
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < lap_rate_.size(); ++i) I[i] += dt * lap_rate_[i];
   }
   if (any_plastic_) plastic_return(sim, dt);
