@@ -43,6 +43,7 @@ class SolidModule : public Module<D> {
   void fit_deformation(Simulation<D>& sim, bool store_fit);
   // The total-Lagrangian bodies (Ganzenmueller 2015), null if the scene has none.
   TotalLagrangian<D>* total_lagrangian() { return tl_.get(); }
+  Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
 
  private:
   std::vector<SolidBodyKeys> keys_;  // per body (solid_keys.hpp)
@@ -52,7 +53,6 @@ class SolidModule : public Module<D> {
     return ph == kSolid && !(tl_ && tl_->is_tl(body));
   }
   std::unique_ptr<TotalLagrangian<D>> tl_;
-  Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
 
   // Plasticity, heating and damage (MMB Sect. 2.2-2.3), only when a solid material has them.
   void plastic_return(Simulation<D>& sim, double dt);
