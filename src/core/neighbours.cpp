@@ -179,23 +179,33 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder, std::size_t rows) {
 
   start_.assign(n + 1, 0);
   rows = std::min(rows, n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < rows; ++i) {
-    std::size_t cnt = 0;
-    visit(i, [&](int, int) { ++cnt; });
-    start_[i + 1] = cnt;
-  }
-  for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
-  nbr_.resize(start_[n]);
-  code_.resize(start_[n]);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < rows; ++i) {
-    std::size_t k = start_[i];
-    visit(i, [&](int j, int code) {
-      nbr_[k] = j;
-      code_[k] = static_cast<std::uint8_t>(code);
-      ++k;
-    });
+  // One pass over the cells: each thread collects the rows of its block in order, then copies
+  // them to their place -- the list a count pass and a fill pass would give.
+  if (buffers_.size() < static_cast<std::size_t>(omp_get_max_threads()))
+    buffers_.resize(omp_get_max_threads());
+#pragma omp parallel
+  {
+    const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const std::size_t lo = rows * t / nt, hi = rows * (t + 1) / nt;
+    RowBuffer& b = buffers_[t];
+    b.j.clear(), b.code.clear();
+    for (std::size_t i = lo; i < hi; ++i) {
+      const std::size_t k0 = b.j.size();
+      visit(i, [&](int j, int code) {
+        b.j.push_back(j);
+        b.code.push_back(static_cast<std::uint8_t>(code));
+      });
+      start_[i + 1] = b.j.size() - k0;
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
+      nbr_.resize(start_[n]);
+      code_.resize(start_[n]);
+    }
+    std::copy(b.j.begin(), b.j.end(), nbr_.begin() + start_[lo]);
+    std::copy(b.code.begin(), b.code.end(), code_.begin() + start_[lo]);
   }
   x_build_.assign(x.begin(), x.end());
   ++builds_;

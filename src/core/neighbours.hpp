@@ -72,6 +72,11 @@ class Neighbours {
   std::vector<int> nbr_;
   std::vector<std::uint8_t> code_;
   std::vector<Vec<D>> x_build_;
+  struct RowBuffer {  // one thread's rows during a build (kept: no allocation per build)
+    std::vector<int> j;
+    std::vector<std::uint8_t> code;
+  };
+  std::vector<RowBuffer> buffers_;
   int builds_ = 0;
   double build_seconds_ = 0;
 };
