@@ -124,3 +124,60 @@ TEST(Hourglass, PerturbedParticleIsPushedBackAndMomentumIsConserved) {
   EXPECT_LT(sum.norm(), 1e-12 * scale);
   EXPECT_LT(std::abs(torque), 1e-12 * scale);
 }
+
+// The force pass against MMB Eq. 31-34 written out pair by pair (the textbook form: a branch on
+// the viscous condition, a division per denominator), on a jittered 3D block with random
+// velocities, so that the viscous part acts on some pairs and not on others.
+TEST(Hourglass, ForceEqualsEquations31To34PairByPair3D) {
+  Rig<3> rig(0.3);
+  auto& sim = *rig.sim;
+  auto& p = sim.particles();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Mat<3> A = random_matrix<3>(rng, 0.05);
+  auto X0 = p.template view<Vec<3>>("initial_position");
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.x()[i] = A * X0[i] + 0.0005 * Vec<3>(u(rng), u(rng), u(rng));  // and a non-affine part
+    p.v()[i] = Vec<3>(u(rng), u(rng), u(rng));
+  }
+  sim.rebuild_neighbours();  // re-sorts the particles: views are taken anew below
+  X0 = p.template view<Vec<3>>("initial_position");
+  for (auto& m : sim.modules()) m->sums(sim);
+  for (auto& a : p.a()) a.setZero();
+  rig.solid->forces(sim);
+  const auto& pl = sim.pairs();
+  const auto& vol = sim.volumes();
+  auto F = p.template view<Mat<3>>("deformation_gradient");
+  const Material& mat = sim.materials()[0];
+  const double K = mat.bulk_modulus, G = mat.shear_modulus, E = 9 * K * G / (3 * K + G);
+  const double xi = 1.0, zeta = 10, chi = 0.5, h = sim.kernel().h(), eta2 = 0.01 * h * h;
+  double err = 0, scale = 0;
+  int viscous = 0, not_viscous = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    Vec<3> f = Vec<3>::Zero();
+    for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
+      const int j = pl.j[k];
+      const Vec<3> d = -pl.r(p.x(), i, k);
+      const Vec<3> X = X0[j] - X0[i];
+      const Vec<3> eps = 0.5 * (Mat<3>(F[i]) + Mat<3>(F[j])) * X - d;  // Eq. 31
+      const double r2 = d.squaredNorm(), X2 = X.squaredNorm(), ed = eps.dot(d);
+      // Eq. 32 (weight 1 - chi, Eq. 34)
+      f += -xi * (1 - chi) * vol[i] * vol[j] * pl.w[k] * E * ed / (X2 * r2) * d;
+      const double vr = (p.v()[j] - p.v()[i]).dot(d);
+      if (vr * ed < 0) {  // Eq. 33 (weight chi)
+        const double rbar = 0.5 * (p.rho()[i] + p.rho()[j]);
+        f += -zeta * chi * p.m()[i] * mat.sound_speed() * h * p.m()[j] / rbar *
+             (eps.norm() / X.norm()) * vr / (r2 + eta2) * pl.f[k] * d;
+        ++viscous;
+      } else {
+        ++not_viscous;
+      }
+    }
+    err = std::max(err, (f - p.m()[i] * p.a()[i]).norm());
+    scale = std::max(scale, f.norm());
+  }
+  EXPECT_GT(viscous, 100);
+  EXPECT_GT(not_viscous, 100);
+  EXPECT_GT(scale, 0);
+  EXPECT_LT(err, 1e-12 * scale);
+}
