@@ -56,8 +56,10 @@ std::uint32_t Neighbours<D>::cell_index(const Vec<D>& x) const {
 template <int D>
 long Neighbours<D>::wrap(Particles<D>& p) const {
   auto x = p.x();
-  long bad = -1;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const long n = static_cast<long>(p.size());
+  long bad = n;  // the first particle outside: the smallest index over the threads
+#pragma omp parallel for reduction(min : bad) schedule(static)
+  for (long i = 0; i < n; ++i) {
     for (int a = 0; a < D; ++a) {
       const double len = dom_.hi[a] - dom_.lo[a];
       if (dom_.periodic[a]) {
@@ -65,12 +67,12 @@ long Neighbours<D>::wrap(Particles<D>& p) const {
           x[i][a] -= std::floor((x[i][a] - dom_.lo[a]) / len) * len;
           if (x[i][a] >= dom_.hi[a]) x[i][a] = dom_.lo[a];
         }
-      } else if (!(x[i][a] >= dom_.lo[a] && x[i][a] <= dom_.hi[a]) && bad < 0) {
-        bad = static_cast<long>(i);
+      } else if (!(x[i][a] >= dom_.lo[a] && x[i][a] <= dom_.hi[a])) {
+        bad = std::min(bad, i);
       }
     }
   }
-  return bad;
+  return bad < n ? bad : -1;
 }
 
 template <int D>
@@ -101,6 +103,7 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder, std::size_t rows) {
     ncell *= nc_[a];
   }
   std::vector<std::uint32_t> cell(n);
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) cell[i] = cell_index(x[i]);
   // Counting sort by cell.
   std::vector<std::size_t> cstart(ncell + 1, 0);
@@ -115,9 +118,12 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder, std::size_t rows) {
     p.permute(sorted);
     x = p.x();
     std::vector<std::uint32_t> c2(n);
-    for (std::size_t i = 0; i < n; ++i) c2[i] = cell[sorted[i]];
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      c2[i] = cell[sorted[i]];
+      sorted[i] = static_cast<int>(i);
+    }
     cell.swap(c2);
-    for (std::size_t i = 0; i < n; ++i) sorted[i] = static_cast<int>(i);
   }
 
   const double rc2 = cell_ * cell_;
@@ -207,7 +213,9 @@ long Neighbours<D>::build(Particles<D>& p, bool reorder, std::size_t rows) {
     std::copy(b.j.begin(), b.j.end(), nbr_.begin() + start_[lo]);
     std::copy(b.code.begin(), b.code.end(), code_.begin() + start_[lo]);
   }
-  x_build_.assign(x.begin(), x.end());
+  x_build_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) x_build_[i] = x[i];
   ++builds_;
   build_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return -1;

@@ -72,7 +72,10 @@ class Neighbours {
   std::vector<int> nbr_;
   std::vector<std::uint8_t> code_;
   std::vector<Vec<D>> x_build_;
-  struct RowBuffer {  // one thread's rows during a build (kept: no allocation per build)
+  // One thread's rows during a build (kept: no allocation per build). A cache line each: two
+  // threads' vector ends in one line made every push_back a transfer of the line between the
+  // cores, and the build on two threads slower than on one.
+  struct alignas(64) RowBuffer {
     std::vector<int> j;
     std::vector<std::uint8_t> code;
   };

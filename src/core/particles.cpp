@@ -96,6 +96,7 @@ void permute_vec(std::vector<T>& data, int nc, const std::vector<int>& order) {
   std::vector<T> out;
   out.reserve(std::max(data.capacity(), order.size() * nc));
   out.resize(order.size() * nc);
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < order.size(); ++i)
     for (int c = 0; c < nc; ++c)
       out[i * nc + c] = data[static_cast<std::size_t>(order[i]) * nc + c];
