@@ -22,6 +22,14 @@ void check_writable(const std::string& file) {
   if (!ok) throw InputError("bench: cannot write " + file);
 }
 
+nlohmann::json ns_per_particle_step_by_pass(const RunResult& r) {
+  nlohmann::json passes = nlohmann::json::object();
+  for (const auto& [pass, s] : r.pass_seconds)
+    passes[pass] =
+        r.steps > 0 && r.particles > 0 ? 1e9 * s / (double(r.steps) * double(r.particles)) : 0.0;
+  return passes;
+}
+
 int run_bench(const BenchOptions& opt) {
   check_writable(opt.json);  // before the runs, not after them
   nlohmann::json rows = nlohmann::json::array();
@@ -73,7 +81,8 @@ int run_bench(const BenchOptions& opt) {
                       {"steps", r.steps},
                       {"wall_seconds", r.wall_seconds},
                       {"particle_steps_per_second", r.particle_steps_per_second},
-                      {"neighbour_build_us_per_particle", nb_us}});
+                      {"neighbour_build_us_per_particle", nb_us},
+                      {"ns_per_particle_step_by_pass", ns_per_particle_step_by_pass(r)}});
     }
   }
   if (!opt.json.empty()) {

@@ -1,9 +1,12 @@
 #pragma once
 #include <cstddef>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
 namespace monosph {
+
+struct RunResult;
 
 struct BenchOptions {
   std::string json;
@@ -37,6 +40,9 @@ double triad_gb_per_s(int threads, std::size_t bytes);
 // At each thread count: arrays of 8 MiB (in the last-level cache of most machines), 512 MiB (in
 // main memory).
 std::vector<Bandwidth> memory_bandwidth(const std::vector<int>& threads);
+
+// Wall time of each pass of a run in ns per particle-step: {"forces": 412.5, ...}.
+nlohmann::json ns_per_particle_step_by_pass(const RunResult& r);
 
 // InputError "bench: cannot write FILE" unless FILE (if given) can be written.
 void check_writable(const std::string& file);

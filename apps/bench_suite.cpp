@@ -103,11 +103,6 @@ int run_bench_suite(const BenchOptions& opt) {
         fmt::print("{:<50} {:>9} {:>3} {:>6} {:>9.2f} {:>13.4g} {:>24}\n", k.label, res.particles,
                    th, res.steps, res.wall_seconds, res.particle_steps_per_second, share);
         std::fflush(stdout);
-        nlohmann::json passes = nlohmann::json::object();
-        for (const auto& [pass, s] : res.pass_seconds)
-          passes[pass] = res.steps > 0 && res.particles > 0
-                             ? 1e9 * s / (double(res.steps) * double(res.particles))
-                             : 0.0;
         rows.push_back({{"case", k.label},
                         {"scene", k.scene},
                         {"dp", base.dp / r},
@@ -116,7 +111,7 @@ int run_bench_suite(const BenchOptions& opt) {
                         {"steps", res.steps},
                         {"wall_seconds", res.wall_seconds},
                         {"particle_steps_per_second", res.particle_steps_per_second},
-                        {"ns_per_particle_step_by_pass", passes},
+                        {"ns_per_particle_step_by_pass", ns_per_particle_step_by_pass(res)},
                         {"slowest_pass", slow}});
       }
     }

@@ -214,8 +214,8 @@ CheckpointMeta checkpoint_meta(Simulation<D>& sim, const Schedule& next, long pr
 
 // The run's size and speed (particles summed over the ranks: collective).
 template <int D>
-void measure_speed(RunResult& res, Simulation<D>& sim, long step0, double wall,
-                   double mean_threads) {
+void measure_speed(RunResult& res, Simulation<D>& sim, long step0, double wall, double mean_threads,
+                   const std::map<std::string, double>& passes0) {
   res.particles = static_cast<std::size_t>(sim.comm().sum(static_cast<long>(sim.owned())));
   res.steps = sim.step() - step0;
   res.wall_seconds = wall;
@@ -224,7 +224,8 @@ void measure_speed(RunResult& res, Simulation<D>& sim, long step0, double wall,
   res.configuration_updates = sim.configuration_updates();
   res.neighbour_seconds = sim.neighbours().build_seconds();
   res.mean_threads = mean_threads;
-  res.pass_seconds = sim.pass_seconds();
+  res.pass_seconds = sim.pass_seconds();  // of the timed steps: without the start-up forces
+  for (const auto& [pass, s] : passes0) res.pass_seconds[pass] -= s;
 }
 
 template <int D>
@@ -308,6 +309,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   std::string status = "completed";
   const auto t0 = Clock::now();
   const long step0 = sim.step();
+  const auto passes0 = sim.pass_seconds();
   try {
     while (sim.time() < scene.end_time - eps) {
       // Land exactly on checkpoint times so that restarts reproduce the run.
@@ -355,7 +357,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   progress.update(sim.time(), sim.step(), true);
   progress.finish();
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  measure_speed(res, sim, step0, wall, governor.mean_threads());
+  measure_speed(res, sim, step0, wall, governor.mean_threads(), passes0);
   if (!opt.write_output) return res;
   check_csv();
   if (res.exit_code == 0) checkpoint(out / "final.h5");

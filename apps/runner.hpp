@@ -26,7 +26,7 @@ struct RunResult {
   int neighbour_builds = 0;
   double mean_threads = 0;  // lower than the threads asked for while other processes were busy
   long configuration_updates = 0;  // pair-geometry updates (fewer with dual-criteria steps)
-  std::map<std::string, double> pass_seconds;  // wall seconds of each pass (Simulation)
+  std::map<std::string, double> pass_seconds;  // wall seconds of each pass in the timed steps
 };
 
 RunResult run_scene(const RunOptions& opt);

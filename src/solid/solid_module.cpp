@@ -284,7 +284,7 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
     // sum_j (X_j - X_i) (x) g_ij = I by construction of the correction (MMB Eq. 28).
     Mat<D> fr = Mat<D>::Zero();
     for (std::size_t k = rstart_[i]; k < rstart_[i + 1]; ++k)
-      fr.noalias() += (x[rj_[k]] + rshift_[k] - x[i]) * rg_[k].transpose();
+      fr.noalias() += (x[rj_[k]] + rshift_[rcode_[k]] - x[i]) * rg_[k].transpose();
     Fr[i] = fr;
     F[i] = fr * Fi[i];  // MMB Eq. 30
   }
@@ -385,7 +385,7 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
   auto ph = p.phase();
   auto bd = p.body();
   const std::size_t n = p.size();
-  const double rc = W.radius();
+  const double rc2 = W.radius() * W.radius();
   // Reference pairs: same solid body, within the kernel support in the reference configuration.
   rstart_.assign(n + 1, 0);
 #pragma omp parallel for schedule(runtime)
@@ -394,14 +394,16 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
     if (eulerian(ph[i], bd[i]))
       for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
         const int j = nb.nbr(k);
-        if (bd[j] == bd[i] && nb.rij(x[i], x[j], k).norm() < rc) ++c;
+        c += bd[j] == bd[i] && nb.rij(x[i], x[j], k).squaredNorm() < rc2;
       }
     rstart_[i + 1] = c;
   }
   for (std::size_t i = 0; i < n; ++i) rstart_[i + 1] += rstart_[i];
   rj_.resize(rstart_[n]);
-  rshift_.resize(rstart_[n]);
+  rcode_.resize(rstart_[n]);
   rg_.resize(rstart_[n]);
+  rshift_ = nb.shifts();
+  const std::uint8_t* code = nb.code_data();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!eulerian(ph[i], bd[i])) continue;
@@ -410,13 +412,13 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.nbr(k);
       const Vec<D> r = nb.rij(x[i], x[j], k);
-      const double rr = r.norm();
-      if (bd[j] != bd[i] || rr >= rc) continue;
-      const double vj = m[j] / rho[j];  // volume at the reference time
+      const double r2 = r.squaredNorm();
+      if (bd[j] != bd[i] || r2 >= rc2) continue;
+      const double vf = m[j] / rho[j] * W.f(std::sqrt(r2));  // V_j at the reference time
       rj_[q] = j;
-      rshift_[q] = nb.shift(k);
-      rg_[q] = vj * W.f(rr) * r;  // V_j grad W(X_ij), corrected below
-      b.noalias() -= (vj * W.f(rr)) * (r * r.transpose());
+      rcode_[q] = code[k];
+      rg_[q] = vf * r;  // V_j grad W(X_ij), corrected below
+      b.noalias() -= vf * (r * r.transpose());
       ++q;
     }
     const Mat<D> lref = invert_correction<D>(b);  // MMB Eq. 9 in the reference configuration

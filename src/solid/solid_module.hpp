@@ -72,11 +72,14 @@ class SolidModule : public Module<D> {
                                                                      khge_ = -1;
   bool any_ls_ = false;
   bool any_as_ = false;
-  // Reference pair list (rebuilt at every neighbour rebuild): j, image shift, and
-  // g_ij = V_j L_ref,i grad W(X_ij) in the reference configuration.
+  // Reference pair list (rebuilt at every neighbour rebuild): j, image shift code (into
+  // rshift_, the neighbour list's table), and g_ij = V_j L_ref,i grad W(X_ij) in the reference
+  // configuration.
   std::vector<std::size_t> rstart_;
   std::vector<int> rj_;
-  std::vector<Vec<D>> rshift_, rg_;
+  std::vector<std::uint8_t> rcode_;
+  std::array<Vec<D>, Neighbours<D>::kShifts> rshift_{};
+  std::vector<Vec<D>> rg_;
   std::vector<Vec<D>> lap_rate_;  // Zhang et al. 2024, Eq. 19: dI_i/dt of the step
   std::vector<double> omega2_;    // hourglass spring frequency bound per particle (last forces)
   Vec<D> box_;

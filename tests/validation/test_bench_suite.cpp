@@ -48,5 +48,28 @@ TEST(BenchSuite, QuickSuiteMeasuresFiveKindsOfSceneAndAppendsARowBlock) {
             std::string::npos);
 }
 
+TEST(BenchScene, JsonRowsHoldTheTimeOfEveryPass) {
+  const std::string dir = out_dir("bench_scene");
+  std::filesystem::create_directories(dir);
+  auto r = run_monosph("bench --scene " + source("cases/oscillating_plate/scene.yaml") +
+                       " --steps 3 --threads 1 --json " + dir + "/bench.json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream js(dir + "/bench.json");
+  auto j = nlohmann::json::parse(js);
+  ASSERT_EQ(j["results"].size(), 1u);
+  const auto& row = j["results"][0];
+  EXPECT_EQ(row["steps"], 3);
+  double sum = 0;
+  for (const char* pass : {"integration", "neighbours", "pair_cache", "sums", "forces"}) {
+    ASSERT_TRUE(row["ns_per_particle_step_by_pass"].contains(pass)) << pass;
+    sum += row["ns_per_particle_step_by_pass"][pass].get<double>();
+  }
+  // The passes are inside the timed steps: together not above the wall time per particle-step.
+  const double wall_ns =
+      1e9 * row["wall_seconds"].get<double>() / (3.0 * row["particles"].get<double>());
+  EXPECT_GT(sum, 0);
+  EXPECT_LE(sum, wall_ns * 1.0001);
+}
+
 }  // namespace
 }  // namespace monosph::test
