@@ -18,10 +18,10 @@ struct HourglassRow {
   const Mat<D>* F;
   const double *m, *rho, *vol, *ep, *sy;
   const std::int64_t* bd;
-  int ref;                   // 0 initial, 1 intermediate, 2 least squares (F holds the choice)
-  bool wrap;                 // periodic axes: the initial difference is the minimum image
-  const SolidModule<D>* sm;  // for the minimum image
-  bool sw;                   // Ganzenmueller's plastic switch
+  int ref;     // 0 initial, 1 intermediate, 2 least squares (F holds the choice)
+  bool wrap;   // periodic axes: the initial difference is the minimum image
+  Vec<D> box;  // periodic length of each axis, 0 along the others
+  bool sw;     // Ganzenmueller's plastic switch
   double E, Ei, kstiff, kvisc, eta2;
 };
 
@@ -54,6 +54,7 @@ template <int D, bool Visc, int Ref, bool Sw>
   const std::int64_t bi = bd[i];
   const double rhoi = h.rho[i], E = h.E, Ei = h.Ei, eta2 = h.eta2;
   const double kvisc2 = 2 * h.kvisc;
+  const Vec<D> box = h.box;
   Vec<D> f = Vec<D>::Zero();
   double kappa = 0, stored = 0;
   for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
@@ -63,9 +64,11 @@ template <int D, bool Visc, int Ref, bool Sw>
     Vec<D> X;
     if constexpr (Ref == 1)
       X = X0[j] + (xi - x[j] + d) - Xi;  // + the image shift
-    else if constexpr (Ref == 2)
-      X = h.sm->initial_difference(X0[j], Xi);
-    else
+    else if constexpr (Ref == 2) {  // as SolidModule::initial_difference, the box held in registers
+      X = X0[j] - Xi;
+      for (int a = 0; a < D; ++a)
+        if (box[a] > 0) X[a] -= box[a] * std::rint(X[a] / box[a]);  // |X_a| < box_a: no tie
+    } else
       X = X0[j] - Xi;
     const double X2 = X.squaredNorm();
     const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
@@ -148,7 +151,8 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   base.vol = vol.data(), base.bd = bd.data(), base.ep = ep.data(), base.sy = sy.data();
   base.X0 = p.template view<Vec<D>>(kX0_).data();
   base.Xr = p.template view<Vec<D>>(kXref_).data();
-  base.wrap = wrap, base.sm = this, base.eta2 = 0.01 * h * h;
+  base.wrap = wrap, base.eta2 = 0.01 * h * h;
+  for (int a = 0; a < D; ++a) base.box[a] = periodic_[a] ? box_[a] : 0.0;
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!eulerian(ph[i], bd[i])) continue;
