@@ -58,6 +58,26 @@ TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
   EXPECT_GT(min_of(t["min_distance"]), 0.1);
 }
 
+TEST(TaylorBar, TotalLagrangianBarStopsWhereTheSceneDoes) {
+  // scene_tlsph.yaml (G15 total-Lagrangian SPH, h = dp) at 6 across, 100 us, 3 s: at rest, the
+  // length within 1.5 % of scene.yaml's at 6 across (27.09 mm; measured 26.80 mm, -1.1 %) and
+  // both within the experiment's bounds of the test above (measured -10.4 %, -5.3 %). At 29
+  // across it is scene.yaml's within 0.02 mm and 1 % (cases/taylor_bar/README.md).
+  const std::string out = out_dir("taylor_3d_tlsph");
+  auto r = run_monosph("run " + source("cases/taylor_bar/scene_tlsph.yaml") + " --out " + out +
+                       " --quiet --set dp=1.2658333333333333e-3 output.every=1");
+  ASSERT_EQ(r.code, 0) << r.output;
+  auto t = read_csv(out + "/probes.csv");
+  EXPECT_LT(t["kinetic_energy"].back(), 0.01 * t["kinetic_energy"].front());
+  EXPECT_NEAR(t["length"].back(), 27.09e-3, 0.015 * 27.09e-3);
+  EXPECT_NEAR(t["length"].back(), 29.9e-3, 0.12 * 29.9e-3);
+  EXPECT_NEAR(t["diameter"].back(), 13.5e-3, 0.15 * 13.5e-3);
+  EXPECT_NEAR(t["diameter_y"].back(), t["diameter_x"].back(), 0.05 * t["diameter_x"].back());
+  EXPECT_GT(max_of(t["max_plastic_strain"]), 0.6);      // measured 1.14
+  EXPECT_GT(max_of(t["max_temperature"]), 292 + 50.0);  // measured 420 K
+  EXPECT_GT(min_of(t["min_distance"]), 0.1);            // measured 0.11 (0.27 at 10 across)
+}
+
 TEST(TaylorBar, PlaneStrainImpactRunsToRest) {
   // 2D plane strain, 10 particles across, 80 us (about a second), anvil friction 0.3 with
   // self-contact and the plastic switch: the slab stops on the wall as one piece. Bounds around
