@@ -64,11 +64,9 @@ template <int D, bool Visc, int Ref, bool Sw>
     Vec<D> X;
     if constexpr (Ref == 1)
       X = X0[j] + (xi - x[j] + d) - Xi;  // + the image shift
-    else if constexpr (Ref == 2) {  // as SolidModule::initial_difference, the box held in registers
-      X = X0[j] - Xi;
-      for (int a = 0; a < D; ++a)
-        if (box[a] > 0) X[a] -= box[a] * std::rint(X[a] / box[a]);  // |X_a| < box_a: no tie
-    } else
+    else if constexpr (Ref == 2)
+      X = minimum_image<D>(X0[j] - Xi, box);  // the box held in registers
+    else
       X = X0[j] - Xi;
     const double X2 = X.squaredNorm();
     const Vec<D> eps = 0.5 * (Fi + Mat<D>(F[j])) * X - d;  // MMB Eq. 31
@@ -136,7 +134,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   const auto& mats = sim.materials();
   const double h = sim.kernel().h();
   const std::size_t n = p.size();
-  const bool wrap = std::any_of(periodic_.begin(), periodic_.end(), [](bool b) { return b; });
+  const bool wrap = (period_.array() > 0).any();
   const auto& vol = sim.volumes();
   std::span<double> ep, sy;
   if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
@@ -151,8 +149,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   base.vol = vol.data(), base.bd = bd.data(), base.ep = ep.data(), base.sy = sy.data();
   base.X0 = p.template view<Vec<D>>(kX0_).data();
   base.Xr = p.template view<Vec<D>>(kXref_).data();
-  base.wrap = wrap, base.eta2 = 0.01 * h * h;
-  for (int a = 0; a < D; ++a) base.box[a] = periodic_[a] ? box_[a] : 0.0;
+  base.wrap = wrap, base.eta2 = 0.01 * h * h, base.box = period_;
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
     if (!eulerian(ph[i], bd[i])) continue;

@@ -67,8 +67,8 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   for (const auto& b : sim.bodies()) any_tl = any_tl || (b.phase == kSolid && b.total_lagrangian);
   if (any_tl) tl_ = std::make_unique<TotalLagrangian<D>>(sim, kS_, kF_, kgradv_, kX0_, kep_, ksy_);
   const auto& dom = sim.neighbours().domain();
-  box_ = dom.length();
-  periodic_ = dom.periodic;
+  const Vec<D> len = dom.length();
+  for (int a = 0; a < D; ++a) period_[a] = dom.periodic[a] ? len[a] : 0.0;
 }
 
 template <int D>
@@ -96,14 +96,6 @@ void SolidModule<D>::on_create(Simulation<D>& sim) {
     const JohnsonCook& jc = mat_[b.material].plasticity;
     sy[i] = jc.on ? jc_yield(jc, 0, 0, T[i]) : 0;
   }
-}
-
-template <int D>
-Vec<D> SolidModule<D>::initial_difference(const Vec<D>& a, const Vec<D>& b) const {
-  Vec<D> d = a - b;
-  for (int k = 0; k < D; ++k)
-    if (periodic_[k]) d[k] -= box_[k] * std::round(d[k] / box_[k]);
-  return d;
 }
 
 template <int D>
@@ -275,6 +267,7 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
   auto Fi = p.template view<Mat<D>>(kFinit_);
   auto Fr = p.template view<Mat<D>>(kFref_);
   auto bd = p.body();
+  const auto& shift = sim.neighbours().shifts();
   const std::size_t n = p.size();
   if (rstart_.size() != n + 1) return;
 #pragma omp parallel for schedule(runtime)
@@ -284,7 +277,7 @@ void SolidModule<D>::compute_deformation_gradient(Simulation<D>& sim) {
     // sum_j (X_j - X_i) (x) g_ij = I by construction of the correction (MMB Eq. 28).
     Mat<D> fr = Mat<D>::Zero();
     for (std::size_t k = rstart_[i]; k < rstart_[i + 1]; ++k)
-      fr.noalias() += (x[rj_[k]] + rshift_[rcode_[k]] - x[i]) * rg_[k].transpose();
+      fr.noalias() += (x[rj_[k]] + shift[rcode_[k]] - x[i]) * rg_[k].transpose();
     Fr[i] = fr;
     F[i] = fr * Fi[i];  // MMB Eq. 30
   }
@@ -402,7 +395,6 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
   rj_.resize(rstart_[n]);
   rcode_.resize(rstart_[n]);
   rg_.resize(rstart_[n]);
-  rshift_ = nb.shifts();
   const std::uint8_t* code = nb.code_data();
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {

@@ -14,6 +14,16 @@
 
 namespace monosph {
 
+// Minimum image of a difference d of initial positions; period_a is the domain's length along a
+// periodic axis a and 0 along the others. |d_a| < period_a, so rint (one instruction) never meets
+// the tie where it would differ from round.
+template <int D>
+inline Vec<D> minimum_image(Vec<D> d, const Vec<D>& period) {
+  for (int a = 0; a < D; ++a)
+    if (period[a] > 0) d[a] -= period[a] * std::rint(d[a] / period[a]);
+  return d;
+}
+
 template <int D>
 class SolidModule : public Module<D> {
  public:
@@ -43,7 +53,9 @@ class SolidModule : public Module<D> {
   void fit_deformation(Simulation<D>& sim, bool store_fit);
   // The total-Lagrangian bodies (Ganzenmueller 2015), null if the scene has none.
   TotalLagrangian<D>* total_lagrangian() { return tl_.get(); }
-  Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const;  // minimum image
+  Vec<D> initial_difference(const Vec<D>& a, const Vec<D>& b) const {
+    return minimum_image<D>(a - b, period_);
+  }
 
  private:
   std::vector<SolidBodyKeys> keys_;  // per body (solid_keys.hpp)
@@ -72,18 +84,15 @@ class SolidModule : public Module<D> {
                                                                      khge_ = -1;
   bool any_ls_ = false;
   bool any_as_ = false;
-  // Reference pair list (rebuilt at every neighbour rebuild): j, image shift code (into
-  // rshift_, the neighbour list's table), and g_ij = V_j L_ref,i grad W(X_ij) in the reference
-  // configuration.
+  // Reference pair list (rebuilt at every neighbour rebuild): j, image shift code (into the
+  // neighbour list's table), and g_ij = V_j L_ref,i grad W(X_ij) in the reference configuration.
   std::vector<std::size_t> rstart_;
   std::vector<int> rj_;
   std::vector<std::uint8_t> rcode_;
-  std::array<Vec<D>, Neighbours<D>::kShifts> rshift_{};
   std::vector<Vec<D>> rg_;
   std::vector<Vec<D>> lap_rate_;  // Zhang et al. 2024, Eq. 19: dI_i/dt of the step
   std::vector<double> omega2_;    // hourglass spring frequency bound per particle (last forces)
-  Vec<D> box_;
-  std::array<bool, D> periodic_{};
+  Vec<D> period_;  // domain length along periodic axes, 0 along the others (minimum_image)
 };
 
 }  // namespace monosph
