@@ -17,7 +17,7 @@ namespace monosph {
 // First force evaluation of a fresh start (a restart reads the fields from the checkpoint).
 template <int D>
 void Simulation<D>::init_multi_rate() {
-  update_pair_cache(false);
+  update_pair_cache(PairRows::read);
   ++configuration_updates_;
   fast_forces(0.0);
   auto v = p_.v();
@@ -177,7 +177,7 @@ void Simulation<D>::substep(double ds, double dt, bool last) {
   clock.lap("integration");
   update_neighbours();  // a rebuild may reorder: views are taken anew below
   clock.lap("neighbours");
-  update_pair_cache(!last);
+  update_pair_cache(last ? PairRows::read : PairRows::read_solids);
   if (last) ++configuration_updates_;
   clock.lap("pair_cache");
   fast_forces(ds / dt);

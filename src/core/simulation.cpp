@@ -187,7 +187,7 @@ template <int D>
 void Simulation<D>::rebuild_neighbours() {
   rebuild_requested_ = true;
   update_neighbours();
-  update_pair_cache();  // pairs_/group_ are indexed by the list just rebuilt (and reordered)
+  update_pair_cache(PairRows::all);  // pairs_/group_ are indexed by the list just rebuilt
 }
 
 template <int D>
@@ -285,7 +285,7 @@ void Simulation<D>::refresh_pair_vectors() {
 }
 
 template <int D>
-void Simulation<D>::update_pair_cache(bool solid_rows_only) {
+void Simulation<D>::update_pair_cache(PairRows rows) {
   auto x = p_.x();
   auto ph = p_.phase();
   auto bd = p_.body();
@@ -319,17 +319,29 @@ void Simulation<D>::update_pair_cache(bool solid_rows_only) {
   const std::uint8_t* __restrict code = nb.code_data();
   const std::array<V, Neighbours<D>::kShifts> shift = nb.shifts();
   pl.shift = shift;
+  const bool all = rows == PairRows::all;
+  const char* read = read_rows_.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;  // of every row: a rebuild may have reordered
     vol_[i] = m[i] / rho[i];
-    if (solid_rows_only && ph[i] != kSolid) continue;  // a multi-rate sub-step
+    if (rows == PairRows::read_solids && ph[i] != kSolid) continue;  // a multi-rate sub-step
     double best = std::numeric_limits<double>::infinity();
     int jb = -1;
     const std::size_t k0 = nb.begin(i), k1 = nb.end(i);
     std::size_t q = k0;
     first[i] = q;
     const V xi = xs[i];
+    if (!all && !read[bd[i]]) {  // a row no module reads: the guard's smallest distance only
+      for (std::size_t k = k0; k < k1; ++k) {
+        const double r2 = (xi - xs[nbr[k]] - shift[code[k]]).squaredNorm();
+        if (r2 < best) best = r2, jb = nbr[k];
+      }
+      cnt[i] = 0;
+      rmin_[i] = std::sqrt(best);
+      jmin_[i] = jb;
+      continue;
+    }
     for (std::size_t k = k0; k < k1; ++k) {
       const int j = nbr[k];
       const V r = xi - xs[j] - shift[code[k]];
@@ -364,7 +376,7 @@ template <int D>
 void Simulation<D>::compute_forces(bool configuration) {
   PassClock clock(pass_seconds_);
   if (configuration) {  // else: an acoustic step of dual-criteria time stepping
-    update_pair_cache();
+    update_pair_cache(PairRows::read);
     clock.lap("pair_cache");
     for (auto& m : modules_) m->sums(*this);
     clock.lap("sums");
@@ -456,10 +468,14 @@ double Simulation<D>::compute_dt() {
 
 template <int D>
 void Simulation<D>::init(bool restarted) {
+  read_rows_.assign(bodies_.size(), 0);
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    for (const auto& m : modules_) read_rows_[b] = read_rows_[b] || m->reads_pair_rows(int(b));
+  skipped_rows_ = std::find(read_rows_.begin(), read_rows_.end(), 0) != read_rows_.end();
   if (restarted) {
     rebuild_requested_ = true;
     update_neighbours();
-    update_pair_cache();
+    update_pair_cache(PairRows::read);
     if (dt_ <= 0) dt_ = scene_.multi_rate ? compute_dt_multi_rate() : compute_dt();
     dt0_ = dt_;
     keep_acceleration();

@@ -58,6 +58,10 @@ class Module {
   // Probe types a module provides (e.g. "surface_force"): the column suffixes of `spec` ("_x",
   // "_y"... or ""), empty when the type is not this module's; `probe` appends one value per column.
   virtual std::vector<std::string> probe_columns(const ProbeSpec&) const { return {}; }
+  // Whether the module's passes read the pair rows (Simulation::pairs) of the particles of body
+  // b. Rows that no module reads stay empty during steps (the smallest distance of the guard is
+  // still found); diagnostics and probes see complete rows.
+  virtual bool reads_pair_rows(int /*body*/) const { return true; }
   virtual void probe(Simulation<D>&, const ProbeSpec&, std::vector<double>& out) {}
   // Elastic energy stored in the module's contacts now (Hertz or Lennard-Jones springs; not the
   // work dissipated by dashpots or friction): this rank's share, from its owned particles, so
@@ -150,11 +154,12 @@ class Simulation {
   void advance(double stop = std::numeric_limits<double>::infinity());
   // Recomputes the pair list (PairList) and the volumes at the current state: needed after moving
   // particles or changing densities by hand (tests); a step does it itself.
-  void update_pair_cache() { update_pair_cache(false); }
+  void update_pair_cache() { update_pair_cache(PairRows::all); }
   // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
   void rebuild_neighbours();
   // Diagnostic fields (e.g. the disorder measure) before output or probes.
   void diagnostics() {
+    if (skipped_rows_) update_pair_cache(PairRows::all);
     for (auto& m : modules_) m->diagnostics(*this);
   }
 
@@ -248,10 +253,13 @@ class Simulation {
   void slow_rates(double dt);
   double compute_dt_multi_rate();
   void compute_reactions();
-  void check_dt_collapse() const;                // throws RunAborted
-  void body_acceleration();                      // a = body force - damping
-  bool update_neighbours();                      // true when the lists were rebuilt
-  void update_pair_cache(bool solid_rows_only);  // multi-rate sub-steps: rows of solids only
+  void check_dt_collapse() const;  // throws RunAborted
+  void body_acceleration();        // a = body force - damping
+  bool update_neighbours();        // true when the lists were rebuilt
+  // Rows of the pair list to fill: those a module reads, of those only the solids' (multi-rate
+  // sub-steps), or all (diagnostics, probes, tests).
+  enum class PairRows { read, read_solids, all };
+  void update_pair_cache(PairRows rows);
   // configuration: recompute the pair geometry and the kernel sums (always, unless dual-criteria
   // time stepping keeps them for the acoustic steps of an advection step).
   void compute_forces(bool configuration = true);
@@ -291,6 +299,8 @@ class Simulation {
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;
   bool rebuild_requested_ = false;
+  std::vector<char> read_rows_;  // per body: a module reads its pair rows (reads_pair_rows)
+  bool skipped_rows_ = false;    // some body's rows are left empty during steps
   // Multi-rate: fields a_slow (all), a_fast and the mean velocity and acceleration over the
   // step (solids); sub-steps per step.
   int kas_ = -1, kaf_ = -1, kvb_ = -1, kab_ = -1, kappa_ = 1;

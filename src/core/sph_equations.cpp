@@ -33,6 +33,7 @@ SphEquations<D>::SphEquations(Simulation<D>& sim, bool store_velocity_gradient) 
   if (store_velocity_gradient) kgradv_ = p.add_field("velocity_gradient", D * D);
   for (const auto& b : sim.bodies()) {
     tl_.push_back(b.total_lagrangian ? 1 : 0);
+    solid_.push_back(b.phase == kSolid ? 1 : 0);
     any_av_ = any_av_ || b.av_alpha > 0 || b.av_beta > 0;
     any_diffusion_ = any_diffusion_ || b.delta > 0;
   }

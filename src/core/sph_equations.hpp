@@ -20,6 +20,9 @@ class SphEquations : public Module<D> {
   void constitutive(Simulation<D>& sim) override;
   void forces(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
+  bool reads_pair_rows(int body) const override {
+    return !skip(body) && (!solids_only_ || solid_[body]);
+  }
   // With the fluid module on, fluid and wall particles are its business: only solids here.
   void set_solids_only(bool on) { solids_only_ = on; }
 
@@ -27,7 +30,7 @@ class SphEquations : public Module<D> {
   bool solids_only_ = false;
   // Per body: total-Lagrangian (Ganzenmueller 2015): its particles are skipped by every pass here
   // (SolidModule computes their F, density, stress and forces from the reference configuration).
-  std::vector<char> tl_;
+  std::vector<char> tl_, solid_;  // per body
   bool skip(std::int64_t body) const { return tl_[body] != 0; }
   int kshep_, kcorr_, kgradv_ = -1, kstress_ = -1, kas_ = -1;
   bool any_av_ = false, any_diffusion_ = false;

@@ -25,6 +25,7 @@ class ClusterModule : public Module<D> {
   void kicked(Simulation<D>& sim, double h) override;
   void drift(Simulation<D>& sim, double dt) override;
   double max_dt(Simulation<D>& sim) override;
+  bool reads_pair_rows(int) const override { return false; }  // no pair passes
   void save_state(std::map<std::string, double>& s) const override;
   void load_state(Simulation<D>& sim, const std::map<std::string, double>& s) override;
   // Probes rigid_centre, rigid_velocity (columns _x, _y(, _z)) and rigid_angular_velocity (one

@@ -22,6 +22,7 @@ class RigidSurfaceModule : public Module<D> {
   void drift(Simulation<D>& sim, double dt) override;
   void forces(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
+  bool reads_pair_rows(int) const override { return false; }  // no pair passes
   std::vector<std::string> probe_columns(const ProbeSpec& spec) const override;
   void probe(Simulation<D>& sim, const ProbeSpec& spec, std::vector<double>& out) override;
   // This rank's share of the Hertz energy 8/15 E* sqrt(R) delta^2.5 (per depth in 2D) of the

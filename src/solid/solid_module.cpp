@@ -66,6 +66,14 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
   bool any_tl = false;
   for (const auto& b : sim.bodies()) any_tl = any_tl || (b.phase == kSolid && b.total_lagrangian);
   if (any_tl) tl_ = std::make_unique<TotalLagrangian<D>>(sim, kS_, kF_, kgradv_, kX0_, kep_, ksy_);
+  // Pair rows read: those of every solid body; of a total-Lagrangian body (whose forces use its
+  // reference pairs) only for self-contact, surface erosion or a fitted deformation (sums).
+  for (std::size_t b = 0; b < keys_.size(); ++b) {
+    const SolidBodyKeys& k = keys_[b];
+    const bool tl = tl_ && tl_->is_tl(std::int64_t(b));
+    rows_.push_back(sim.bodies()[b].phase == kSolid &&
+                    (!tl || k.self_contact > 0 || k.erosion == 2 || any_ls_));
+  }
   const auto& dom = sim.neighbours().domain();
   const Vec<D> len = dom.length();
   for (int a = 0; a < D; ++a) period_[a] = dom.periodic[a] ? len[a] : 0.0;

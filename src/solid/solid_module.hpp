@@ -43,6 +43,7 @@ class SolidModule : public Module<D> {
   void before_rebuild(Simulation<D>& sim) override;
   void on_rebuild(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;
+  bool reads_pair_rows(int body) const override { return rows_[body] != 0; }
 
   void diagnostics(Simulation<D>& sim) override;
 
@@ -92,6 +93,7 @@ class SolidModule : public Module<D> {
   std::vector<Vec<D>> rg_;
   std::vector<Vec<D>> lap_rate_;  // Zhang et al. 2024, Eq. 19: dI_i/dt of the step
   std::vector<double> omega2_;    // hourglass spring frequency bound per particle (last forces)
+  std::vector<char> rows_;        // per body: its pair rows are read (reads_pair_rows)
   Vec<D> period_;  // domain length along periodic axes, 0 along the others (minimum_image)
 };
 

@@ -130,7 +130,7 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
   for (std::size_t s = 0; s < ns; ++s) start_[s + 1] = start_[s] + nbr[s].size();
   const std::size_t np = start_[ns];
   nj_.resize(np);
-  rev_.resize(np);
+  gr_.resize(np);
   mask_.resize(np);
   X_.resize(np);
   g_.resize(np);
@@ -145,8 +145,8 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
       const double rr = r.norm(), f = W.f(rr);
       nj_[k] = t;
       mask_[k] = cmask[c];
-      X_[k] = -r;  // X_ij = X_j - X_i (G15 Fig. 1)
-      w_[k] = W.w(rr);
+      X_[k] = -r;                         // X_ij = X_j - X_i (G15 Fig. 1)
+      w_[k] = W.w(rr) / r.squaredNorm();  // W(X_ij) / X_ij^2 of the hourglass force (G15 Eq. 32)
       g_[k] = v0_[t] * f * r;
       b.noalias() -= (v0_[t] * f) * (r * r.transpose());
     }
@@ -170,7 +170,7 @@ void TotalLagrangian<D>::build(Simulation<D>& sim) {
         else
           hi = mid;
       }
-      rev_[k] = static_cast<int>(lo);
+      gr_[k] = g_[lo];  // g_ji beside g_ij: the force loop streams it instead of a gather
     }
   built_ = true;
 }
@@ -199,14 +199,18 @@ void TotalLagrangian<D>::map_slots(Simulation<D>& sim) {
 
 template <int D>
 void TotalLagrangian<D>::on_rebuild(Simulation<D>& sim) {
-  if (!built_) build(sim);  // first build, fresh or restarted (from X0 and V0)
+  const bool first = !built_;
+  if (first) build(sim);  // first build, fresh or restarted (from X0 and V0)
   map_slots(sim);
+  if (!first) return;
+  auto x = sim.particles().x();  // F at the restart's positions, for the first rates
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < sid_.size(); ++s) F_[s] = reference_gradient(s, x, true);
 }
 
 template <int D>
 void TotalLagrangian<D>::rates(Simulation<D>& sim) {
   auto& p = sim.particles();
-  auto x = p.x();
   auto v = p.v();
   auto drho = p.drho();
   auto L = p.template view<Mat<D>>(kgradv_);
@@ -214,9 +218,10 @@ void TotalLagrangian<D>::rates(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    const Mat<D> F = reference_gradient(s, x, true);    // G15 Eq. 17
+    // F of the last sums (G15 Eq. 17): the positions have not moved since (on_rebuild after a
+    // restart), and the same loop gives the same bits.
     const Mat<D> Fd = reference_gradient(s, v, false);  // its rate
-    L[i] = Fd * F.inverse();                            // velocity gradient dv/dx = Fdot F^-1
+    L[i] = Fd * F_[s].inverse();                        // velocity gradient dv/dx = Fdot F^-1
     drho[i] = 0;  // rho = rho0 / det F: no continuity equation
   }
 }
@@ -321,21 +326,20 @@ void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
       // G15 Eq. 24: f_i = sum_j V_i V_j (P_i L_i grad W_i(X_ij) - P_j L_j grad W_j(X_ji));
       // g_ij holds V_j L_i grad W: anti-symmetric pair terms, linear momentum exact. An image
       // j' = R j: P_j' g_j'i = R (P_j g_j(Ri)).
-      const Vec<D> fj = v0_[t] * (P_[t] * g_[rev_[k]]);
+      const Vec<D> fj = v0_[t] * (P_[t] * gr_[k]);
       f.noalias() += Pi * g_[k] - (mk ? image(fj, mk, false) : fj);
       if (alpha <= 0) continue;
       // G15 Eq. 25-27: error of the pair against F_i X_ij and F_j X_ij (X_ji = -X_ij).
       const int j = idx_[t];
       const Vec<D> xij = (mk ? image(x[j], mk, true) : x[j]) - x[i];
-      const double r = xij.norm();
+      const double ir = 1.0 / xij.norm();
       const Vec<D>& X = X_[k];
-      const double X2 = X.squaredNorm();
-      const double di = (F_[s] * X - xij).dot(xij) / r;
-      const double dj = ((mk ? image(F_[t], mk) : F_[t]) * X - xij).dot(xij) / r;
+      const double di = (F_[s] * X - xij).dot(xij) * ir;
+      const double dj = ((mk ? image(F_[t], mk) : F_[t]) * X - xij).dot(xij) * ir;
       const double Ej = sw && ep[j] > 0 ? sy[j] : E;
-      const double vw = v0_[t] * w_[k] / X2;  // V_j W(X_ij) / X_ij^2, W in the reference frame
+      const double vw = v0_[t] * w_[k];  // V_j W(X_ij) / X_ij^2, W in the reference frame
       // G15 Eq. 32: -1/2 alpha V_i V_j W_ij / X_ij^2 [E_i delta_i + E_j delta_j] x_ij / x_ij
-      f += (-0.5 * alpha * vi * vw * (Ei * di + Ej * dj) / r) * xij;
+      f += (-0.5 * alpha * vi * vw * (Ei * di + Ej * dj) * ir) * xij;
       const double Eij = 0.5 * (Ei + Ej), dm = 0.5 * (di + dj);
       kappa += vw * Eij;
       stored += vw * Eij * dm * dm;

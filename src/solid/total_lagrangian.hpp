@@ -35,7 +35,9 @@ class TotalLagrangian {
   bool is_tl(std::int64_t body) const { return tlb_[body] != 0; }
   void on_create(Simulation<D>& sim);  // reference volumes V0 = m / rho
   void on_rebuild(Simulation<D>& sim);
-  void rates(Simulation<D>& sim);         // F, L = Fdot F^-1 at the half-step velocities
+  // L = Fdot F^-1 at the half-step velocities, with the F of the last sums (the positions have
+  // not moved since: the drift follows the rates).
+  void rates(Simulation<D>& sim);
   void sums(Simulation<D>& sim);          // F (G15 Eq. 17) and rho = rho0 / det F
   void constitutive(Simulation<D>& sim);  // pressure, S (neo-Hookean) and PK1 P
   // Internal and hourglass forces; omega2 (per particle) the hourglass spring frequency bound,
@@ -84,18 +86,18 @@ class TotalLagrangian {
   std::vector<double> v0_;
   std::vector<Mat<D>> F_, P_;
   // Reference pairs of slot s: k in [start_[s], start_[s+1]): neighbour slot, X_ij = X_j - X_i,
-  // W(|X_ij|), g_ij, and the index of the pair (j, i) in j's list.
+  // W(|X_ij|) / X_ij^2, g_ij and g_ji (of the pair (j, i) in j's list).
   // mask_: 0 for a neighbour itself, else the axes across whose symmetry planes (domain.mirror)
   // the neighbour is the image of slot nj_ (Libersky et al. 1993 ghosts, built in the reference
   // configuration: the full body's reference neighbours and corrections).
   std::vector<std::size_t> start_;
-  std::vector<int> nj_, rev_;
+  std::vector<int> nj_;
   std::vector<unsigned char> mask_;
-  std::array<double, D> plane_;  // symmetry plane per axis (NaN: none)
-  std::vector<Vec<D>> X_, g_;
-  std::vector<double> w_;
-  std::vector<int> slot_of_;  // per particle index: slot or -1
-  std::vector<int> pos_;      // scratch of map_slots: particle id -> index
+  std::array<double, D> plane_;     // symmetry plane per axis (NaN: none)
+  std::vector<Vec<D>> X_, g_, gr_;  // gr_: g_ji
+  std::vector<double> w_;           // W(X_ij) / X_ij^2
+  std::vector<int> slot_of_;        // per particle index: slot or -1
+  std::vector<int> pos_;            // scratch of map_slots: particle id -> index
   bool built_ = false;
 };
 

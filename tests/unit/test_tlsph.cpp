@@ -57,8 +57,9 @@ struct Rig {
     sim->init();
   }
   std::span<Vec<D>> X0() { return sim->particles().template view<Vec<D>>("initial_position"); }
-  // x = phi(X0), v = psi(X0); then rates, sums, constitutive and the solid forces alone (no body
-  // force): returns the largest |m a|.
+  // x = phi(X0), v = psi(X0); then sums, rates (which read the F of the sums, as after a step's
+  // force pass), constitutive and the solid forces alone (no body force): returns the largest
+  // |m a|.
   double place(const std::function<Vec<D>(const Vec<D>&)>& phi,
                const std::function<Vec<D>(const Vec<D>&)>& psi) {
     auto& p = sim->particles();
@@ -68,8 +69,8 @@ struct Rig {
       p.v()[i] = psi(X);
     }
     sim->rebuild_neighbours();  // also re-sorts particles: the reference data must follow
-    for (auto& m : sim->modules()) m->rates(*sim);
     for (auto& m : sim->modules()) m->sums(*sim);
+    for (auto& m : sim->modules()) m->rates(*sim);
     for (auto& m : sim->modules()) m->constitutive(*sim);
     for (auto& a : p.a()) a.setZero();
     solid->forces(*sim);
