@@ -32,7 +32,11 @@ inline Mat3 update_deviatoric(const Mat3& S, const Mat3& L, double mu, double dt
     const double a = 0.5 * dt * w(1, 0), c = (1 - a * a) / (1 + a * a), s = 2 * a / (1 + a * a);
     q << c, -s, 0, s, c, 0, 0, 0, 1;
   } else {
-    q = (I - 0.5 * dt * w).inverse() * (I + 0.5 * dt * w);
+    // The same Cayley map in closed form for a skew A (A^3 = -|a|^2 A, a its axial vector):
+    // (I - A)^-1 (I + A) = I + 2 (A + A^2) / (1 + |a|^2).
+    const Eigen::Matrix3d A = 0.5 * dt * w;
+    const double a2 = A(2, 1) * A(2, 1) + A(0, 2) * A(0, 2) + A(1, 0) * A(1, 0);
+    q = I + (2.0 / (1.0 + a2)) * (A + A * A);
   }
   const Eigen::Matrix3d s = Eigen::Matrix3d(S) + dt * 2.0 * mu * (e - e.trace() / 3.0 * I);
   return Mat3(q * s * q.transpose());

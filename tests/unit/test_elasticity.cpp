@@ -40,6 +40,24 @@ TEST(Jaumann, RigidRotationBy90DegreesKeepsInvariants) {
   EXPECT_LT((s - R * s0 * R.transpose()).norm(), 1e-6 * s0.norm());
 }
 
+TEST(Jaumann, RigidRotationAboutATiltedAxisKeepsInvariants) {
+  // The same about the axis n = (1, 2, 2)/3 (the closed-form 3D Cayley map): S -> R S R^T with
+  // R the rotation by 90 degrees about n (Rodrigues: R = I + sin K + (1 - cos) K^2).
+  const Mat3 s0 = random_deviator(2);
+  const Vec3 n(1.0 / 3, 2.0 / 3, 2.0 / 3);
+  const double omega = 3.0, t_end = M_PI / 2 / omega, dt = t_end / 1000;
+  Mat3 K;
+  K << 0, -n.z(), n.y(), n.z(), 0, -n.x(), -n.y(), n.x(), 0;
+  const Mat3 L = omega * K;  // v = omega n x x
+  Mat3 s = s0;
+  for (int k = 0; k < 1000; ++k) s = update_deviatoric(s, L, 80e9, dt);
+  EXPECT_NEAR(j2(s), j2(s0), 1e-9 * j2(s0));
+  EXPECT_NEAR(j3(s), j3(s0), 1e-9 * std::abs(j3(s0)));
+  const Mat3 R = Mat3::Identity() + K + K * K;
+  EXPECT_LT((s - R * s0 * R.transpose()).norm(), 1e-6 * s0.norm());
+  EXPECT_GT((s - s0).norm(), 0.1 * s0.norm());  // it did turn
+}
+
 TEST(Jaumann, RateMatchesMMBEq14) {
   const Mat3 s = random_deviator(2);
   Mat3 L;
