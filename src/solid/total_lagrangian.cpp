@@ -260,12 +260,20 @@ void TotalLagrangian<D>::constitutive(Simulation<D>& sim) {
   const int kd = p.find("damage");
   std::span<double> dmg;
   if (kd >= 0) dmg = p.template view<double>(kd);
+  auto bd = p.body();
+  std::span<double> ep, sy;
+  if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
   const auto& mats = sim.materials();
   const std::size_t ns = sid_.size();
+  E_.resize(ns);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
     const Material& mat = mats[mt[i]];
+    // Stiffness of the hourglass force (G15 Eq. 32): with the plastic switch (G15 Sect. 4.5) a
+    // plastically deformed particle uses its yield stress.
+    const bool sw = keys_[bd[i]].hg_plastic_switch && ksy_ >= 0;
+    E_[s] = sw && ep[i] > 0 ? sy[i] : mat.youngs_modulus();
     const Mat<D>& F = F_[s];
     const double J = F.determinant();
     if (neo_hookean_[mt[i]]) {
@@ -291,6 +299,7 @@ void TotalLagrangian<D>::constitutive(Simulation<D>& sim) {
       const Mat<D> sig = Mat<D>(S[i].template topLeftCorner<D, D>()) - pp * Mat<D>::Identity();
       P_[s] = J * sig * F.inverse().transpose();  // PK1 P = J sigma F^-T
     }
+    P_[s] *= v0_[s];  // V0 P: the force pass's factor
   }
 }
 
@@ -302,22 +311,13 @@ void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
   auto a = p.a();
   auto m = p.m();
   auto bd = p.body();
-  auto mt = p.material();
-  std::span<double> ep, sy;
-  if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
-  const auto& mats = sim.materials();
   const std::size_t ns = sid_.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    const SolidBodyKeys& b = keys_[bd[i]];
-    const double alpha = b.hg_xi;  // G15 alpha = MMB xi (docs/theory.md)
-    const double E = mats[mt[i]].youngs_modulus();
-    // G15 Sect. 4.5: a plastically deformed particle uses its yield stress in Eq. 32.
-    const bool sw = b.hg_plastic_switch && ksy_ >= 0;
-    const double Ei = sw && ep[i] > 0 ? sy[i] : E;
-    const double vi = v0_[s];
-    const Mat<D> Pi = vi * P_[s];
+    const double alpha = keys_[bd[i]].hg_xi;  // G15 alpha = MMB xi (docs/theory.md)
+    const double Ei = E_[s], vi = v0_[s];
+    const Mat<D>& Pi = P_[s];  // V0_i P_i
     Vec<D> f = Vec<D>::Zero();
     double kappa = 0, stored = 0;
     for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
@@ -326,7 +326,7 @@ void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
       // G15 Eq. 24: f_i = sum_j V_i V_j (P_i L_i grad W_i(X_ij) - P_j L_j grad W_j(X_ji));
       // g_ij holds V_j L_i grad W: anti-symmetric pair terms, linear momentum exact. An image
       // j' = R j: P_j' g_j'i = R (P_j g_j(Ri)).
-      const Vec<D> fj = v0_[t] * (P_[t] * gr_[k]);
+      const Vec<D> fj = P_[t] * gr_[k];
       f.noalias() += Pi * g_[k] - (mk ? image(fj, mk, false) : fj);
       if (alpha <= 0) continue;
       // G15 Eq. 25-27: error of the pair against F_i X_ij and F_j X_ij (X_ji = -X_ij).
@@ -336,7 +336,7 @@ void TotalLagrangian<D>::forces(Simulation<D>& sim, std::vector<double>& omega2,
       const Vec<D>& X = X_[k];
       const double di = (F_[s] * X - xij).dot(xij) * ir;
       const double dj = ((mk ? image(F_[t], mk) : F_[t]) * X - xij).dot(xij) * ir;
-      const double Ej = sw && ep[j] > 0 ? sy[j] : E;
+      const double Ej = E_[t];
       const double vw = v0_[t] * w_[k];  // V_j W(X_ij) / X_ij^2, W in the reference frame
       // G15 Eq. 32: -1/2 alpha V_i V_j W_ij / X_ij^2 [E_i delta_i + E_j delta_j] x_ij / x_ij
       f += (-0.5 * alpha * vi * vw * (Ei * di + Ej * dj) * ir) * xij;

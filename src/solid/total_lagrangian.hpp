@@ -80,11 +80,12 @@ class TotalLagrangian {
 
   std::vector<char> tlb_;  // per body
   int kS_, kF_, kgradv_, kX0_, kV0_, kep_, ksy_;
-  // Per slot: particle id, current index, V0, F, PK1 P.
+  // Per slot: particle id, current index, V0, F, V0 times PK1 P, hourglass stiffness (G15 Eq. 32).
   std::vector<std::int64_t> sid_;
   std::vector<int> idx_;
   std::vector<double> v0_;
   std::vector<Mat<D>> F_, P_;
+  std::vector<double> E_;
   // Reference pairs of slot s: k in [start_[s], start_[s+1]): neighbour slot, X_ij = X_j - X_i,
   // W(|X_ij|) / X_ij^2, g_ij and g_ji (of the pair (j, i) in j's list).
   // mask_: 0 for a neighbour itself, else the axes across whose symmetry planes (domain.mirror)
