@@ -61,6 +61,7 @@ int run_bench_suite(const BenchOptions& opt) {
       {"2D plasticity + damage (metal cutting)", c + "/metal_cutting/scene.yaml", {2, 4, 8}},
       {"AFM (fluid, PMMA, grains)", c + "/abrasive_flow_machining/scene.yaml", {1, 2}},
       {"3D solid (Taylor bar)", c + "/taylor_bar/scene.yaml", {1.36, 2.9}},
+      {"3D solid, total Lagrangian (Taylor bar)", c + "/taylor_bar/scene_tlsph.yaml", {1.36, 2.9}},
   };
   if (opt.quick)
     for (auto& k : cases) k.refine.resize(1);

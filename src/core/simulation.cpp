@@ -321,6 +321,15 @@ void Simulation<D>::update_pair_cache(PairRows rows) {
   pl.shift = shift;
   const bool all = rows == PairRows::all;
   const char* read = read_rows_.data();
+  // An unread row only serves the guard. Between rebuilds every particle stays within skin/2 of
+  // its place at the build, so a distance changes by less than a skin from the build to any
+  // moment before the next one: a row whose smallest distance at its first fill after the build
+  // exceeded the guard's limit + 2 skins cannot reach the limit before the next rebuild and is
+  // not revisited (its rmin_ stays; complete rows for probes come from diagnostics).
+  const bool bound = rmin_build_of_ == nb_.builds();
+  const bool fresh = !bound && rows != PairRows::read_solids;
+  const double far = scene_.min_distance * scene_.dp + 2 * nb_.skin();
+  const double* rb = rmin_build_.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     group_[i] = bodies_[bd[i]].group;  // of every row: a rebuild may have reordered
@@ -333,11 +342,12 @@ void Simulation<D>::update_pair_cache(PairRows rows) {
     first[i] = q;
     const V xi = xs[i];
     if (!all && !read[bd[i]]) {  // a row no module reads: the guard's smallest distance only
+      cnt[i] = 0;
+      if (bound && rb[i] > far) continue;
       for (std::size_t k = k0; k < k1; ++k) {
         const double r2 = (xi - xs[nbr[k]] - shift[code[k]]).squaredNorm();
         if (r2 < best) best = r2, jb = nbr[k];
       }
-      cnt[i] = 0;
       rmin_[i] = std::sqrt(best);
       jmin_[i] = jb;
       continue;
@@ -365,6 +375,7 @@ void Simulation<D>::update_pair_cache(PairRows rows) {
     jmin_[i] = jb;
   }
   pl.first[n] = nb_.pairs();
+  if (fresh) rmin_build_ = rmin_, rmin_build_of_ = nb_.builds();
   min_r_ = std::numeric_limits<double>::infinity();
   min_i_ = min_j_ = -1;
   const std::size_t own = owned();

@@ -295,6 +295,8 @@ class Simulation {
   double min_r_ = 0;
   PairList<D> pairs_;
   std::vector<double> rmin_, vol_;
+  std::vector<double> rmin_build_;  // rmin_ at the first fill after the last rebuild
+  int rmin_build_of_ = -1;          // the build it belongs to (Neighbours::builds)
   std::vector<double> wave_speed_;  // per material, sqrt((K + 4 mu/3)/rho0)
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;

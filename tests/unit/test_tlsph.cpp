@@ -328,26 +328,73 @@ end_time: 1
 }
 
 // No module reads the pair rows of a total-Lagrangian body (its forces use the reference pairs):
-// a step leaves them empty, yet the guard's smallest distance is the one over all particles, and
-// diagnostics (output, probes) see complete rows.
-TEST(Tlsph, StepsLeaveUnreadPairRowsEmptyButKeepTheSmallestDistance) {
+// a step leaves them empty; diagnostics (output, probes) see complete rows and the exact smallest
+// distance.
+TEST(Tlsph, StepsLeaveUnreadPairRowsEmptyButDiagnosticsSeeThemAll) {
   Rig<3> rig(1.0, false, 0.3);
   auto& sim = *rig.sim;
   auto& p = sim.particles();
-  for (auto& v : p.v()) v = Vec<3>(0, 0, -50);  // moving: rows are refilled every step
-  for (int s = 0; s < 3; ++s) sim.advance();
+  for (std::size_t i = 0; i < p.size(); ++i)  // moving and shearing: distances change
+    p.v()[i] = Vec<3>(5000 * p.x()[i].z(), 0, -1000);
+  for (int s = 0; s < 20; ++s) sim.advance();
+  EXPECT_GT(sim.neighbours().builds(), 2);
   const auto& pl = sim.pairs();
   long filled = 0;
   for (std::size_t i = 0; i < p.size(); ++i) filled += pl.count[i];
   EXPECT_EQ(filled, 0);
+  sim.diagnostics();
+  for (std::size_t i = 0; i < p.size(); ++i) filled += pl.count[i];
+  EXPECT_GT(filled, long(8 * p.size()));  // every particle has at least 8 neighbours
   double brute = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = 0; j < i; ++j) brute = std::min(brute, (p.x()[i] - p.x()[j]).norm());
   EXPECT_EQ(sim.min_distance(), brute);
-  EXPECT_GT(brute, 0.1 * sim.dp());
-  sim.diagnostics();
-  for (std::size_t i = 0; i < p.size(); ++i) filled += pl.count[i];
-  EXPECT_GT(filled, long(8 * p.size()));  // every particle has at least 8 neighbours
+}
+
+// The guard still sees unread rows: two total-Lagrangian blocks (no contact between them) flying
+// into each other stop the run when two particles come closer than min_distance dp, although
+// between rebuilds only the rows that could reach the limit are revisited.
+TEST(Tlsph, BlocksFlyingIntoEachOtherTripTheGuard) {
+  const Scene sc = load_scene_text(R"(
+name: tl_meet
+dimension: 2
+dp: 0.01
+domain: {min: [-1, -1], max: [1, 1]}
+materials:
+  steel: {density: 7800, bulk_modulus: 160e9, shear_modulus: 80e9}
+bodies:
+  - {name: a, phase: solid, material: steel, formulation: total_lagrangian,
+     shape: {box: {min: [0, 0], max: [0.1, 0.1]}}, initial: {velocity: ["200", "0"]}}
+  - {name: b, phase: solid, material: steel, formulation: total_lagrangian,
+     shape: {box: {min: [0.13, 0.005], max: [0.23, 0.105]}}, initial: {velocity: ["-200", "0"]}}
+end_time: 1
+)");
+  Simulation<2> sim(sc);
+  sim.add_module(std::make_unique<SphEquations<2>>(sim, true));
+  sim.add_module(std::make_unique<SolidModule<2>>(sim));
+  sim.create_particles();
+  sim.init();
+  auto closest = [&] {
+    auto x = sim.particles().x();  // a rebuild re-sorts the particles
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < x.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j) d = std::min(d, (x[i] - x[j]).norm());
+    return d;
+  };
+  std::string msg;
+  const double gap = 0.135 - 0.095;  // between the facing particle rows (centres)
+  try {
+    while (sim.time() < 2 * gap / 400) {
+      sim.advance();
+      // Every step that passes the guard has no pair closer than the limit.
+      ASSERT_GE(closest(), 0.1 * sim.dp()) << "t = " << sim.time();
+    }
+  } catch (const RunAborted& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("dp apart (limit 0.1 dp)"), std::string::npos) << msg;
+  EXPECT_GT(sim.time(), 0.5 * gap / 400);  // not before the rows met
+  EXPECT_LT(closest(), 0.1 * sim.dp());
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 namespace monosph::test {
 namespace {
 
-TEST(BenchSuite, QuickSuiteMeasuresFiveKindsOfSceneAndAppendsARowBlock) {
+TEST(BenchSuite, QuickSuiteMeasuresSixKindsOfSceneAndAppendsARowBlock) {
   const std::string dir = out_dir("bench_suite");
   std::filesystem::create_directories(dir);
   const std::string md = dir + "/performance.md";
@@ -20,7 +20,7 @@ TEST(BenchSuite, QuickSuiteMeasuresFiveKindsOfSceneAndAppendsARowBlock) {
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream js(dir + "/suite.json");
   auto j = nlohmann::json::parse(js);
-  ASSERT_EQ(j["suite"].size(), 5u);
+  ASSERT_EQ(j["suite"].size(), 6u);
   for (const auto& row : j["suite"]) {
     EXPECT_GT(row["particles"].get<long>(), 5000) << row["case"];
     EXPECT_EQ(row["steps"], 3);
@@ -44,6 +44,7 @@ TEST(BenchSuite, QuickSuiteMeasuresFiveKindsOfSceneAndAppendsARowBlock) {
   EXPECT_EQ(text.str().rfind("# Performance\n", 0), 0u);  // appended, not overwritten
   EXPECT_NE(text.str().find("### `monosph bench --suite`"), std::string::npos);
   EXPECT_NE(text.str().find("| 3D solid (Taylor bar) |"), std::string::npos);
+  EXPECT_NE(text.str().find("| 3D solid, total Lagrangian (Taylor bar) |"), std::string::npos);
   EXPECT_NE(text.str().find("memory bandwidth (STREAM triad, GB/s): 8 MiB on 1 thread"),
             std::string::npos);
 }
