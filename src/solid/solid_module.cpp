@@ -176,7 +176,9 @@ void SolidModule<D>::plastic_return(Simulation<D>& sim, double dt) {
   if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(runtime)
+  // Dynamic chunks: the yielding particles (a Newton solve each) gather in one region, e.g. the
+  // impact end of a Taylor bar, which equal halves would give to one thread.
+#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     if (!mat_[mt[i]].plasticity.on) continue;
