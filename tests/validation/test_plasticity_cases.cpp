@@ -51,16 +51,22 @@ static void expect_bar_at_rest_near_experiment(const Table& t) {
   EXPECT_GT(min_of(t["min_distance"]), 0.1);
 }
 
+// Probes of a 3D Taylor bar scene run at 6 particles across the diameter (810 particles, 100 us).
+static Table run_bar_6_across(const std::string& scene, const std::string& name) {
+  const std::string out = out_dir(name);
+  auto r = run_monosph("run " + source(scene) + " --out " + out +
+                       " --quiet --set dp=1.2658333333333333e-3 output.every=1");
+  EXPECT_EQ(r.code, 0) << r.output;
+  return read_csv(out + "/probes.csv");
+}
+
 TEST(TaylorBar, CoarseBarStopsNearTheExperiment) {
   // 3D, 6 particles across the diameter (810 particles), 100 us, anvil friction 0.3: the bar
   // comes to rest. Against House et al. 1995 (29.9 mm, 13.5 mm) the length is 9.4 % short (MMB
   // report about 10 %) and the diameter (probe `diameter`, any direction) 11.8 % small; the
   // diameter is the same to 0.2 % at 10 and 15 across (cases/taylor_bar/README.md).
-  const std::string out = out_dir("taylor_3d_coarse");
-  auto r = run_monosph("run " + source("cases/taylor_bar/scene.yaml") + " --out " + out +
-                       " --quiet --set dp=1.2658333333333333e-3 output.every=1");
-  ASSERT_EQ(r.code, 0) << r.output;
-  auto t = read_csv(out + "/probes.csv");
+  const Table t = run_bar_6_across("cases/taylor_bar/scene.yaml", "taylor_3d_coarse");
+  ASSERT_FALSE(HasFailure());
   // Plastic strain 0.82 at 6 across, 1.16 at 15 across.
   expect_bar_at_rest_near_experiment(t);
 }
@@ -70,11 +76,8 @@ TEST(TaylorBar, TotalLagrangianBarStopsWhereTheSceneDoes) {
   // length within 1.5 % of scene.yaml's at 6 across (27.09 mm; measured 26.80 mm, -1.1 %) and
   // both within the experiment's bounds of the test above (measured -10.4 %, -5.3 %). At 29
   // across it is scene.yaml's within 0.02 mm and 1 % (cases/taylor_bar/README.md).
-  const std::string out = out_dir("taylor_3d_tlsph");
-  auto r = run_monosph("run " + source("cases/taylor_bar/scene_tlsph.yaml") + " --out " + out +
-                       " --quiet --set dp=1.2658333333333333e-3 output.every=1");
-  ASSERT_EQ(r.code, 0) << r.output;
-  auto t = read_csv(out + "/probes.csv");
+  const Table t = run_bar_6_across("cases/taylor_bar/scene_tlsph.yaml", "taylor_3d_tlsph");
+  ASSERT_FALSE(HasFailure());
   EXPECT_NEAR(t["length"].back(), 27.09e-3, 0.015 * 27.09e-3);
   // Measured: plastic strain 1.14, 420 K, smallest distance 0.11 dp (0.27 at 10 across).
   expect_bar_at_rest_near_experiment(t);
