@@ -256,6 +256,7 @@ class Simulation {
   void check_dt_collapse() const;  // throws RunAborted
   void body_acceleration();        // a = body force - damping
   bool update_neighbours();        // true when the lists were rebuilt
+  void set_loop_schedule() const;  // dynamic chunks for the schedule(runtime) loops
   // Rows of the pair list to fill: those a module reads, of those only the solids' (multi-rate
   // sub-steps), or all (diagnostics, probes, tests).
   enum class PairRows { read, read_solids, all };

@@ -99,6 +99,7 @@ void SphEquations<D>::rates(Simulation<D>& sim) {
   if (any_diffusion_) {
     cs_.resize(n);
     delta_.resize(n);
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i)
       cs_[i] = mats[mt[i]].sound_speed(), delta_[i] = bodies[bd[i]].delta;
   }
@@ -189,7 +190,7 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
     cs_.resize(n);
     alpha_.resize(n);
     beta_.resize(n);
-    phimax_.assign(n, 0.0);
+    phimax_.resize(n);  // each row of the force loop sets its own
   }
   // Per-particle factor T_i of the stress divergence a_i = c_i sum_j w_j (T_i + T_j) grad_i W_ij:
   // normalised (MMB Eq. 10-11): T = Sigma/(rho^2 S), w_j = m_j, c_i = 1;
@@ -218,11 +219,15 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
   }
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) continue;
+    if ((solids_only_ && ph[i] != kSolid) || skip(bd[i])) {
+      if (any_av_) phimax_[i] = 0.0;
+      continue;
+    }
     const int gi = grp[i];
     const auto row = pl.row(x, i);
     const double as_eps = bodies[bd[i]].as_epsilon, as_n = bodies[bd[i]].as_n;
     Vec<D> acc = Vec<D>::Zero(), accs = Vec<D>::Zero();
+    double phim = 0.0;  // largest -phi_ij of the approaching pairs, for max_dt
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (grp[j] != gi) continue;
@@ -244,11 +249,12 @@ void SphEquations<D>::forces(Simulation<D>& sim) {
           const double cbar = 0.5 * (cs_[i] + cs_[j]);
           const double phi = h * vr / (r.squaredNorm() + eta2);
           f += ((alpha * cbar - beta * phi) * phi / (0.5 * (rho[i] + rho[j]))) * gw;
-          phimax_[i] = std::max(phimax_[i], -phi);
+          phim = std::max(phim, -phi);
         }
       }
       acc += m[j] * f;
     }
+    if (any_av_) phimax_[i] = phim;
     a[i] += acc + (bodies[bd[i]].corrected_divergence ? accs / rho[i] : accs);
   }
 }

@@ -71,8 +71,8 @@ void LubricationModule<D>::on_rebuild(Simulation<D>& sim) {
 template <int D>
 void LubricationModule<D>::find_films(Simulation<D>& sim) {
   // Per cluster: the closest pair with a particle of another body or cluster, its gap h = r - dp
-  // (particles are cells of side dp), its approach speed and the partner. Serial over the owned
-  // rigid particles in index order: the same for any thread count.
+  // (particles are cells of side dp), its approach speed and the partner. Each rigid particle's
+  // closest pair in parallel, then per cluster in index order: the same for any thread count.
   auto& p = sim.particles();
   const auto& pl = sim.pairs();
   auto ph = p.phase();
@@ -81,22 +81,31 @@ void LubricationModule<D>::find_films(Simulation<D>& sim) {
   auto x = p.x();
   auto cl = p.template view<std::int64_t>(kcl_);
   const double dp = sim.dp(), inf = std::numeric_limits<double>::infinity();
-  for (auto& f : film_) f = Film{inf, -inf, 0, 0, 0, -1};
-  for (std::size_t i : rigid_) {
-    Film& f = film_[cl[i]];
+  // Smaller gap first, then the faster approach; the first such pair in (i, k) order wins.
+  auto closer = [](const Film& a, const Film& b) {
+    return a.gap < b.gap || (a.gap == b.gap && a.speed > b.speed);
+  };
+  closest_.resize(rigid_.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t q = 0; q < rigid_.size(); ++q) {
+    const std::size_t i = rigid_[q];
+    Film f{inf, -inf, 0, 0, 0, -1};
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (!film_partner(ph[j]) || (ph[j] == kRigid && cl[j] == cl[i])) continue;
       const Vec<D> rij = pl.r(x, i, k);
-      const double r = rij.norm(), h = r - dp;
-      const double U = -(v[i] - v[j]).dot(rij) / r;  // > 0: closing
-      if (h < f.gap || (h == f.gap && U > f.speed)) {
-        f.gap = h, f.speed = U, f.partner = object(bd[j], cl[j]);
-        const double a = radius_[cl[i]];
-        f.radius = cl[j] >= 0 ? a * radius_[cl[j]] / (a + radius_[cl[j]]) : a;
-      }
+      const double r = rij.norm();
+      const Film g{r - dp, -(v[i] - v[j]).dot(rij) / r, 0, 0, 0, -1};  // speed > 0: closing
+      if (!closer(g, f)) continue;
+      f = g, f.partner = object(bd[j], cl[j]);
+      const double a = radius_[cl[i]];
+      f.radius = cl[j] >= 0 ? a * radius_[cl[j]] / (a + radius_[cl[j]]) : a;
     }
+    closest_[q] = f;
   }
+  for (auto& f : film_) f = Film{inf, -inf, 0, 0, 0, -1};
+  for (std::size_t q = 0; q < rigid_.size(); ++q)
+    if (closer(closest_[q], film_[cl[rigid_[q]]])) film_[cl[rigid_[q]]] = closest_[q];
   const Comm& comm = sim.comm();
   const std::size_t nc = film_.size();
   if (comm.parallel()) {  // the closest pair over all ranks; its speed, radius and partner

@@ -51,6 +51,7 @@ class LubricationModule : public Module<D> {
   std::vector<double> radius_, mass_;  // per cluster
   std::vector<std::size_t> rigid_;     // indices of the rigid particles
   std::vector<Film> film_;
+  std::vector<Film> closest_;  // per rigid particle (rigid_), this step
   std::vector<double> buf_;
   std::vector<Vec<D>> flub_;       // lubrication force on each owned particle, this step
   Vec<D> total_ = Vec<D>::Zero();  // lubrication force on all clusters, this step

@@ -117,7 +117,10 @@ void ClusterModule<D>::set_members(Simulation<D>& sim, bool positions) {
   auto v = p.v();
   auto off = p.template view<Vec<D>>(koff_);
   auto G = p.template view<Mat<D>>(kG_);
-  for (const auto& c : c_) {
+  // One cluster per iteration: the members of a cluster are disjoint from the others'.
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t q = 0; q < c_.size(); ++q) {
+    const Cluster& c = c_[q];
     const Mat<D> rot = rotation(c);
     const Vec3 w = world_omega(c);
     Mat3 skew;
@@ -262,15 +265,17 @@ void ClusterModule<D>::on_rebuild(Simulation<D>& sim) {
 template <int D>
 void ClusterModule<D>::forces(Simulation<D>& sim) {
   // F = sum_k m_k a_k and T = sum_k r_k x m_k a_k over everything the members received (Eq. in
-  // equations.md Sect. 5); serial sums in member order (the same for any thread count). Then the
-  // members get the rigid acceleration a_k = A + alpha x r_k + omega x (omega x r_k), which the
-  // fluid's wall condition reads in the next step.
+  // equations.md Sect. 5); each cluster's sums in member order (the same for any thread count).
+  // Then the members get the rigid acceleration a_k = A + alpha x r_k + omega x (omega x r_k),
+  // which the fluid's wall condition reads in the next step.
   auto& p = sim.particles();
   auto a = p.a();
   auto m = p.m();
   auto off = p.template view<Vec<D>>(koff_);
   const std::size_t own = sim.owned();  // members on other ranks add there (MPI)
-  for (auto& c : c_) {
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t q = 0; q < c_.size(); ++q) {
+    Cluster& c = c_[q];
     const Mat<D> rot = rotation(c);
     c.force.setZero();
     c.torque.setZero();
@@ -296,7 +301,9 @@ void ClusterModule<D>::forces(Simulation<D>& sim) {
       for (int a = 0; a < 3; ++a) c.torque[a] = ft[q++];
     }
   }
-  for (auto& c : c_) {
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t q = 0; q < c_.size(); ++q) {
+    const Cluster& c = c_[q];
     const Mat<D> rot = rotation(c);
     const Vec<D> acc = c.force / c.mass;
     const Vec3 w = world_omega(c);

@@ -138,7 +138,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   const auto& vol = sim.volumes();
   std::span<double> ep, sy;
   if (ksy_ >= 0) ep = p.template view<double>(kep_), sy = p.template view<double>(ksy_);
-  omega2_.assign(n, 0.0);
+  omega2_.resize(n);  // every row set below (TL rows again by tl_->forces)
   std::span<double> hge;
   if (khge_ >= 0) hge = p.template view<double>(khge_);
   std::span<Vec<D>> lap;
@@ -152,6 +152,7 @@ void SolidModule<D>::forces(Simulation<D>& sim) {
   base.wrap = wrap, base.eta2 = 0.01 * h * h, base.box = period_;
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
+    omega2_[i] = 0.0;
     if (!eulerian(ph[i], bd[i])) continue;
     const BodyInfo& b = bodies[bd[i]];
     const SolidBodyKeys& sk = keys_[bd[i]];

@@ -146,10 +146,13 @@ void SolidModule<D>::laplacian_rate(Simulation<D>& sim) {
   auto x = p.x();
   const auto& bodies = sim.bodies();
   const std::size_t n = std::min(p.size(), pl.count.size());
-  lap_rate_.assign(n, Vec<D>::Zero());
+  lap_rate_.resize(n);  // every row set below
 #pragma omp parallel for schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_solid(ph[i]) || bodies[bd[i]].formulation != 2) continue;
+    if (!is_solid(ph[i]) || bodies[bd[i]].formulation != 2) {
+      lap_rate_[i] = Vec<D>::Zero();
+      continue;
+    }
     Vec<D> lap = Vec<D>::Zero();
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
@@ -206,10 +209,11 @@ void SolidModule<D>::erode(Simulation<D>& sim) {
   const std::size_t n = p.size();
   if (pl.count.size() != n || grp.size() != n) return;
   auto& flag = erode_flag_;
-  flag.assign(n, 0);
+  flag.resize(n);
   long count = 0;
 #pragma omp parallel for reduction(+ : count) schedule(runtime)
   for (std::size_t i = 0; i < n; ++i) {
+    flag[i] = 0;
     if (!is_solid(ph[i]) || dmg[i] < 1) continue;
     const int mode = keys_[bd[i]].erosion;
     if (mode == 0) continue;
