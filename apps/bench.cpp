@@ -70,6 +70,7 @@ int run_bench(const BenchOptions& opt) {
       ro.max_steps = opt.steps;
       ro.write_output = false;
       RunResult r = run_scene(ro);
+      if (r.exit_code != 0) return r.exit_code;  // interrupted or diverged: no figures
       const double nb_us =
           r.neighbour_builds ? 1e6 * r.neighbour_seconds / r.neighbour_builds / r.particles : 0;
       fmt::print("{:>3} {:>9} {:>8} {:>7} {:>12.3f} {:>14.4g} {:>12.3f}\n", c.dim, r.particles, th,

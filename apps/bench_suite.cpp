@@ -93,6 +93,7 @@ int run_bench_suite(const BenchOptions& opt) {
         ro.max_steps = opt.steps;
         ro.write_output = false;
         RunResult res = run_scene(ro);
+        if (res.exit_code != 0) return res.exit_code;  // interrupted or diverged: no figures
         double total = 0, worst = 0;
         std::string slow;
         for (const auto& [pass, s] : res.pass_seconds) {

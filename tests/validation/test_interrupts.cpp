@@ -64,6 +64,23 @@ TEST(Interrupts, RestartAfterSigintSigtermSigusr1SigkillEqualsUninterruptedRun) 
   }
 }
 
+TEST(Interrupts, SigtermStopsTheWholeBenchSuiteWithoutFigures) {
+  // A signal stops the row being measured and the suite with it (exit 128 + sig, no JSON): before,
+  // the suite went on with its next row.
+  const std::string dir = out_dir("interrupt_bench");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string json = dir + "/suite.json";
+  Child c = start_child(std::string(MONOSPH_BIN) + " bench --suite --quick --threads 1 --cases " +
+                            source("cases") + " --json " + json,
+                        log_of(dir));
+  pause_ms(3000);  // into the first rows (the suite takes about half a minute)
+  ASSERT_FALSE(reap(c)) << file_text(log_of(dir));
+  kill(c.pid, SIGTERM);
+  EXPECT_EQ(wait_exit(c, 20), 128 + SIGTERM) << file_text(log_of(dir));
+  EXPECT_FALSE(std::filesystem::exists(json));
+}
+
 // A run to 0.02 s with checkpoints at 0.01 and 0.02: checkpoint.h5 counts 105 probe rows.
 std::string checkpointed_run(const std::string& name) {
   const std::string dir = out_dir(name);
