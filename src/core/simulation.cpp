@@ -100,14 +100,9 @@ std::string Simulation<D>::describe(std::size_t i) {
 
 template <int D>
 void Simulation<D>::set_loop_schedule() const {
-  // Physics loops use schedule(runtime): dynamic chunks of about 1/32 of the owned particles.
-  // Threads take chunks as they finish, so neither loops that skip the other phases (particles
-  // are sorted by cell: phases form blocks) nor a virtual CPU that runs slower for a while leave
-  // a thread waiting; chunks of at least 64 keep the locality of contiguous rows. Measured against
-  // equal halves / static chunks of 64, 2 threads over 1, chunks of 1024-2048 (docs/performance.md,
-  // issue 25): AFM 40k 1.60 -> 1.69-1.76, dam break 42k 1.70-1.75 -> 1.81-1.87, plate 40k 1.69 ->
-  // 1.79-1.81. Loops schedule(runtime) gather per particle and reduce only integers, max and min:
-  // results do not depend on it.
+  // Physics loops use schedule(runtime): dynamic chunks of about 1/32 of the owned particles, so
+  // that neither phase blocks nor a slower vCPU leave a thread waiting (docs/performance.md, issue
+  // 25). The loops gather per particle and reduce only integers, max, min: same bits on any count.
   const long chunk = std::clamp(static_cast<long>(owned()) / 32, 64L, 2048L);
   omp_set_schedule(omp_sched_dynamic, static_cast<int>(chunk));
 }

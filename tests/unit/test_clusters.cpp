@@ -372,10 +372,11 @@ time_step: {cfl: 0.3}
 TEST(Clusters, LubricatedGrainsDoNotDependOnThreadCount) {
   auto with = build<2>(lubricated_pair(true)), without = build<2>(lubricated_pair(false));
   for (int k = 0; k < 5; ++k) with->advance(), without->advance();
-  // The films act: the approaching cylinder is slowed more than by the resolved fluid alone.
+  // The films act: the left cylinder closes on the right one (its closest partner) more slowly
+  // than with the resolved fluid alone.
   const auto& v = module<ClusterModule<2>>(*with).cluster(0).velocity;
   const auto& v0 = module<ClusterModule<2>>(*without).cluster(0).velocity;
-  EXPECT_NE(v[1], v0[1]);
+  EXPECT_LT(v[0], v0[0]);
   test::expect_thread_independent<2>([] { return build<2>(lubricated_pair(true)); }, 40);
 }
 
