@@ -201,7 +201,7 @@ void write_summary(Simulation<D>& sim, RunResult& res, const std::string& status
       status == "completed" || status == "interrupted" ? status : "stopped", res.particles,
       res.steps, res.wall_seconds, res.particle_steps_per_second,
       comm.parallel() ? fmt::format("{} ranks x ", comm.size()) : "", how.threads,
-      how.busy ? fmt::format(" (mean {:.2f}: other processes were busy)", res.mean_threads) : "");
+      how.busy ? fmt::format(" (mean {:.3f}: other processes were busy)", res.mean_threads) : "");
   if (how.quiet)  // the one line a script's log keeps: status and where the summary is
     fmt::print(stderr, "{}; summary {}\n", done, (out / "summary.json").string());
   if (!how.quiet) {
