@@ -81,6 +81,7 @@ void LubricationModule<D>::find_films(Simulation<D>& sim) {
   auto x = p.x();
   auto cl = p.template view<std::int64_t>(kcl_);
   const double dp = sim.dp(), inf = std::numeric_limits<double>::infinity();
+  const Film none{inf, -inf};  // no partner: any pair is closer
   // Smaller gap first, then the faster approach; the first such pair in (i, k) order wins.
   auto closer = [](const Film& a, const Film& b) {
     return a.gap < b.gap || (a.gap == b.gap && a.speed > b.speed);
@@ -89,13 +90,13 @@ void LubricationModule<D>::find_films(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static)
   for (std::size_t q = 0; q < rigid_.size(); ++q) {
     const std::size_t i = rigid_[q];
-    Film f{inf, -inf, 0, 0, 0, -1};
+    Film f = none;
     for (std::size_t k = pl.begin(i); k < pl.end(i); ++k) {
       const int j = pl.j[k];
       if (!film_partner(ph[j]) || (ph[j] == kRigid && cl[j] == cl[i])) continue;
       const Vec<D> rij = pl.r(x, i, k);
       const double r = rij.norm();
-      const Film g{r - dp, -(v[i] - v[j]).dot(rij) / r, 0, 0, 0, -1};  // speed > 0: closing
+      const Film g{r - dp, -(v[i] - v[j]).dot(rij) / r};  // speed > 0: closing
       if (!closer(g, f)) continue;
       f = g, f.partner = object(bd[j], cl[j]);
       const double a = radius_[cl[i]];
@@ -103,9 +104,11 @@ void LubricationModule<D>::find_films(Simulation<D>& sim) {
     }
     closest_[q] = f;
   }
-  for (auto& f : film_) f = Film{inf, -inf, 0, 0, 0, -1};
-  for (std::size_t q = 0; q < rigid_.size(); ++q)
-    if (closer(closest_[q], film_[cl[rigid_[q]]])) film_[cl[rigid_[q]]] = closest_[q];
+  std::fill(film_.begin(), film_.end(), none);
+  for (std::size_t q = 0; q < rigid_.size(); ++q) {
+    Film& f = film_[cl[rigid_[q]]];
+    if (closer(closest_[q], f)) f = closest_[q];
+  }
   const Comm& comm = sim.comm();
   const std::size_t nc = film_.size();
   if (comm.parallel()) {  // the closest pair over all ranks; its speed, radius and partner
