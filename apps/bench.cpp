@@ -66,6 +66,7 @@ int run_bench(const BenchOptions& opt) {
       ro.scene = c.file;
       ro.overrides = {fmt::format("dp={:.17g}", dp), "output.checkpoint_every=0"};
       ro.threads = th;
+      ro.fixed_threads = opt.fixed_threads;
       ro.quiet = true;
       ro.max_steps = opt.steps;
       ro.write_output = false;
@@ -79,6 +80,7 @@ int run_bench(const BenchOptions& opt) {
       rows.push_back({{"dimension", c.dim},
                       {"particles", r.particles},
                       {"threads", th},
+                      {"threads_mean", r.mean_threads},
                       {"steps", r.steps},
                       {"wall_seconds", r.wall_seconds},
                       {"particle_steps_per_second", r.particle_steps_per_second},

@@ -14,6 +14,7 @@ struct BenchOptions {
   std::vector<long> sizes{10000, 40000, 160000};
   long size3d = 50000;
   std::vector<int> threads{1, 2};
+  bool fixed_threads = false;  // each measurement on exactly its thread count (no governor)
   std::string cases_dir = MONOSPH_CASES_DIR;
   std::string scene;              // bench this scene instead of the acoustic wave...
   std::vector<double> refine{1};  // ...at dp / each of these

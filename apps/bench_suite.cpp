@@ -89,6 +89,7 @@ int run_bench_suite(const BenchOptions& opt) {
         ro.scene = k.scene;
         ro.overrides = {fmt::format("dp={:.17g}", base.dp / r), "output.checkpoint_every=0"};
         ro.threads = th;
+        ro.fixed_threads = opt.fixed_threads;
         ro.quiet = true;
         ro.max_steps = opt.steps;
         ro.write_output = false;
@@ -110,6 +111,7 @@ int run_bench_suite(const BenchOptions& opt) {
                         {"dp", base.dp / r},
                         {"particles", res.particles},
                         {"threads", th},
+                        {"threads_mean", res.mean_threads},
                         {"steps", res.steps},
                         {"wall_seconds", res.wall_seconds},
                         {"particle_steps_per_second", res.particle_steps_per_second},

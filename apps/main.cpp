@@ -99,6 +99,10 @@ int run_main(int argc, char** argv) {
   CLI::App app{"monosph: Eulerian-kernel SPH for fluids, hourglass-controlled solids and grains"};
   app.require_subcommand(1);
 
+  // The thread governor lowers the thread count while other processes keep the CPUs busy.
+  const char* kFixedThreads =
+      "hold the thread count for the whole run, even while other processes are busy (tests, "
+      "benchmarks, reproducibility: summary.json threads_mean then equals threads)";
   RunOptions run;
   auto* cmd_run = app.add_subcommand("run", "run a scene to its end time");
   cmd_run->add_option("scene", run.scene, "scene file (YAML)");
@@ -110,6 +114,7 @@ int run_main(int argc, char** argv) {
                    "OpenMP threads (default: OMP_NUM_THREADS, else the usable cores)")
       ->check(whole_number(1));
   cmd_run->add_option("--restart", run.restart, "continue from a checkpoint file (.h5)");
+  cmd_run->add_flag("--fixed-threads", run.fixed_threads, kFixedThreads);
   cmd_run->add_flag("--quiet", run.quiet, "no progress line");
   cmd_run->add_option("--steps", run.max_steps, "stop after this many steps (then write final.h5)")
       ->check(whole_number(1, LONG_MAX));
@@ -135,6 +140,7 @@ int run_main(int argc, char** argv) {
       ->check(whole_number(0, LONG_MAX));
   cmd_bench->add_option("--threads", bench.threads, "thread counts to measure")
       ->check(whole_number(1));
+  cmd_bench->add_flag("--fixed-threads", bench.fixed_threads, kFixedThreads);
   cmd_bench->add_option("--cases", bench.cases_dir, "folder that holds the cases");
   cmd_bench->add_option("--scene", bench.scene, "bench this scene instead of the acoustic wave");
   cmd_bench->add_option("--refine", bench.refine, "with --scene: run at dp divided by each factor")
@@ -164,6 +170,7 @@ int run_main(int argc, char** argv) {
   cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")->check(whole_number(1));
   cmd_study->add_option("--threads", study.threads, "threads per run (default: cores / jobs)")
       ->check(whole_number(1));
+  cmd_study->add_flag("--fixed-threads", study.fixed_threads, kFixedThreads);
 
   StabilityOptions stab;
   auto* cmd_stab = app.add_subcommand(
@@ -175,6 +182,7 @@ int run_main(int argc, char** argv) {
   cmd_stab->add_option("--jobs", stab.jobs, "scenes at once (processes)")->check(whole_number(1));
   cmd_stab->add_option("--threads", stab.threads, "threads per run (default: cores / jobs)")
       ->check(whole_number(1));
+  cmd_stab->add_flag("--fixed-threads", stab.fixed_threads, kFixedThreads);
 
   set_default_threads();
   silence_vtk();  // VTK's errors become our checked, one-line failures

@@ -51,7 +51,8 @@ nlohmann::json summary_json(Simulation<D>& sim, const RunResult& res, const std:
   js["wall_seconds"] = res.wall_seconds;
   js["particle_steps_per_second"] = res.particle_steps_per_second;
   js["threads"] = threads;
-  js["threads_mean"] = res.mean_threads;  // lower while other processes used the CPUs
+  js["threads_mean"] = res.mean_threads;    // lower while other processes used the CPUs
+  js["threads_fixed"] = res.fixed_threads;  // --fixed-threads: threads_mean equals threads
   js["ranks"] = comm.size();
   if (sim.decomposition()) {
     js["halo_bytes_per_step"] = mpi["halo_bytes_per_step"];
@@ -100,15 +101,25 @@ bool measure_run(nlohmann::json& js, const Scene& scene, const std::filesystem::
       if (it == head.end() || cols.empty()) return nullptr;
       return &cols[it - head.begin()];
     };
+    // The measure of a probe's column, or NaN and why not.
+    auto measure = [&](const std::string& probe, const std::string& what, double start,
+                       std::string& why) {
+      const auto* y = column(probe);
+      const double v = y ? measure_series(what, cols[0], *y, start, &why) : NAN;
+      if (!y) why = "probes.csv has no column of probe '" + probe + "'";
+      if (!std::isfinite(v) && why.empty()) why = "the probe's values are not finite";
+      return v;
+    };
     for (const auto& ref : scene.references) {
-      const auto* y = column(ref.probe);
-      const double value = y ? measure_series(ref.measure, cols[0], *y, ref.start) : NAN;
+      std::string why;
+      const double value = measure(ref.probe, ref.measure, ref.start, why);
       // A measure over a window (final, max, min, mean) is the reference's only once the run has
       // simulated the time the scene gives it; before that it is "not reached", not an error.
       const double needs = ref.needs_time(scene.reference_end_time);
       const bool reached = time >= needs * (1 - 1e-9);
       nlohmann::json m;
       m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+      if (!std::isfinite(value)) m["why_no_value"] = why;
       m["reference"] =
           std::isfinite(ref.value) ? nlohmann::json(ref.value) : nlohmann::json(nullptr);
       m["reached"] = reached;
@@ -123,13 +134,14 @@ bool measure_run(nlohmann::json& js, const Scene& scene, const std::filesystem::
     if (!scene.checks.empty()) {
       js["checks"] = nlohmann::json::object();
       for (const auto& c : scene.checks) {
-        const auto* y = column(c.probe);
-        const double value = y ? measure_series(c.measure, cols[0], *y, c.start) : NAN;
+        std::string why;
+        const double value = measure(c.probe, c.measure, c.start, why);
         const bool pass =
             status == "completed" && std::isfinite(value) && value >= c.min && value <= c.max;
         all = all && pass;
         nlohmann::json m;
         m["value"] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+        if (!std::isfinite(value)) m["why_no_value"] = why;
         if (std::isfinite(c.min)) m["min"] = c.min;
         if (std::isfinite(c.max)) m["max"] = c.max;
         m["pass"] = pass;
@@ -152,8 +164,8 @@ void print_measures(const nlohmann::json& js, const Scene& scene, double time) {
       continue;
     }
     if (m["value"].is_null()) {
-      fmt::print(stderr, "monosph: {} could not be measured from probe '{}'\n", ref.name,
-                 ref.probe);
+      fmt::print(stderr, "monosph: {} could not be measured from probe '{}': {}\n", ref.name,
+                 ref.probe, m["why_no_value"].get<std::string>());
       continue;
     }
     if (m["reference"].is_null()) {
@@ -168,7 +180,7 @@ void print_measures(const nlohmann::json& js, const Scene& scene, double time) {
   for (const auto& c : scene.checks) {
     const nlohmann::json& m = js["checks"][c.name];
     fmt::print(stderr, "monosph: check {} = {} ({}{}{}): {}\n", c.name,
-               m["value"].is_null() ? std::string("not measured")
+               m["value"].is_null() ? "not measured: " + m["why_no_value"].get<std::string>()
                                     : fmt::format("{:.6g}", m["value"].get<double>()),
                std::isfinite(c.min) ? fmt::format(">= {:g}", c.min) : "",
                std::isfinite(c.min) && std::isfinite(c.max) ? ", " : "",

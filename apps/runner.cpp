@@ -181,6 +181,16 @@ void check_output_fields(const Particles<D>& p, const Scene& scene) {
   }
 }
 
+// Steps end on checkpoint times (restarts reproduce the run): an interval shorter than the first
+// step would shorten every step to it (1e-12 s: 1e10 steps for 0.01 s, and a file each).
+void check_checkpoint_interval(const Scene& scene, double dt) {
+  if (scene.checkpoint_every > 0 && scene.checkpoint_every < dt)
+    throw InputError(fmt::format(
+        "output.checkpoint_every: {:g} s is shorter than the time step ({:.3g} s at the start): "
+        "every step would end on a checkpoint; give at least {:.3g} s, or 0 for none",
+        scene.checkpoint_every, dt, dt));
+}
+
 // The output folder exists and every rank can write to it.
 void check_writable(const fs::path& out, const Comm& comm) {
   std::error_code ec;
@@ -215,7 +225,7 @@ CheckpointMeta checkpoint_meta(Simulation<D>& sim, const Schedule& next, long pr
 // The run's size and speed (particles summed over the ranks: collective).
 template <int D>
 void measure_speed(RunResult& res, Simulation<D>& sim, long step0, double wall, double mean_threads,
-                   const std::map<std::string, double>& passes0) {
+                   bool fixed_threads, const std::map<std::string, double>& passes0) {
   res.particles = static_cast<std::size_t>(sim.comm().sum(static_cast<long>(sim.owned())));
   res.steps = sim.step() - step0;
   res.wall_seconds = wall;
@@ -224,6 +234,7 @@ void measure_speed(RunResult& res, Simulation<D>& sim, long step0, double wall, 
   res.configuration_updates = sim.configuration_updates();
   res.neighbour_seconds = sim.neighbours().build_seconds();
   res.mean_threads = mean_threads;
+  res.fixed_threads = fixed_threads;
   res.pass_seconds = sim.pass_seconds();  // of the timed steps: without the start-up forces
   for (const auto& [pass, s] : passes0) res.pass_seconds[pass] -= s;
 }
@@ -235,14 +246,26 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   SignalGuard signals;  // from the start: a signal during the set-up stops after the first step
   // Before the set-up, whose parallel regions would also wait for descheduled threads.
   const int threads = omp_get_max_threads();
-  ThreadGovernor governor(usable_cpus(), threads);
+  // --fixed-threads: a governor that never learns of other processes keeps `threads`.
+  ThreadGovernor governor(usable_cpus(), threads,
+                          opt.fixed_threads ? ThreadGovernor::Sampler([] { return -1; })
+                                            : ThreadGovernor::Sampler(other_runnable_threads));
   // Locked before anything is read or written there (and cleared of an earlier run's results).
   std::unique_ptr<OutputFolder> folder;
   if (opt.write_output)
     folder = std::make_unique<OutputFolder>(out, restart_meta != nullptr, Comm::world());
   Simulation<D> sim(scene);
   assemble_modules(sim);
-  Schedule next = start(sim, restart_meta, opt.restart);
+  // A guard that trips before the first step (an initial velocity of 1e5 m/s, a restarted
+  // particle outside the domain) stops the run as one in a step would: last state and summary.
+  std::string start_abort;
+  Schedule next{};
+  try {
+    next = start(sim, restart_meta, opt.restart);
+  } catch (const RunAborted& e) {
+    start_abort = e.what();
+  }
+  if (start_abort.empty()) check_checkpoint_interval(scene, sim.dt());
   auto& p = sim.particles();
   check_output_fields(p, scene);
   Probes<D> probes(sim);
@@ -294,13 +317,13 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
     return vtk->write(p, sim.owned(), sim.time(), sim.step(), scene.output_fields);
   };
   const double eps = 1e-12 * scene.end_time;
-  if (!restart_meta) {
+  if (!restart_meta && start_abort.empty()) {
     if (opt.write_output) frame();
     next.output = scene.output_every > 0 ? scene.output_every : scene.end_time;
     sample();
     next.probe = scene.probe_every;
   }
-  if (!restart_meta) {  // one line at the start: solid bodies that would pass through each other
+  if (!restart_meta && start_abort.empty()) {  // one line: solid bodies that would pass through
     const std::string w = untouched_bodies_warning(sim);
     if (root && !w.empty()) fmt::print(stderr, "monosph: warning: {}\n", w);
   }
@@ -310,8 +333,22 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   const auto t0 = Clock::now();
   const long step0 = sim.step();
   const auto passes0 = sim.pass_seconds();
+  // A guard that trips: the message, exit code 3, the last state as a frame.
+  auto stopped = [&](const std::string& why) {
+    status = why;
+    res.exit_code = 3;
+    if (root) fmt::print(stderr, "\nmonosph: run stopped: {}\n", why);
+    if (!opt.write_output) return;
+    try {
+      auto f = frame();
+      if (root) fmt::print(stderr, "monosph: last state written to {}\n", f.string());
+    } catch (const std::exception& w) {
+      fmt::print(stderr, "monosph: could not write the last state: {}\n", w.what());
+    }
+  };
+  if (!start_abort.empty()) stopped(start_abort);
   try {
-    while (sim.time() < scene.end_time - eps) {
+    while (start_abort.empty() && sim.time() < scene.end_time - eps) {
       // Land exactly on checkpoint times so that restarts reproduce the run.
       double stop = scene.end_time;
       if (scene.checkpoint_every > 0) stop = std::min(stop, next.checkpoint);
@@ -340,24 +377,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
       }
     }
   } catch (const RunAborted& e) {
-    status = e.what();
-    res.exit_code = 3;
-    if (root) fmt::print(stderr, "\nmonosph: run stopped: {}\n", e.what());
-    if (opt.write_output) {
-      try {
-        auto f = frame();
-        if (root) fmt::print(stderr, "monosph: last state written to {}\n", f.string());
-      } catch (const std::exception& w) {
-        fmt::print(stderr, "monosph: could not write the last state: {}\n", w.what());
-      }
-    }
+    stopped(e.what());
   }
   // However the run ended (end time, --steps, an interrupt), its last state is the last frame.
   if (opt.write_output && frame_step != sim.step()) frame();
   progress.update(sim.time(), sim.step(), true);
   progress.finish();
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  measure_speed(res, sim, step0, wall, governor.mean_threads(), passes0);
+  measure_speed(res, sim, step0, wall, governor.mean_threads(), opt.fixed_threads, passes0);
   if (!opt.write_output) return res;
   check_csv();
   if (res.exit_code == 0) checkpoint(out / "final.h5");

@@ -12,7 +12,8 @@ struct RunOptions {
   std::vector<std::string> overrides;
   std::string out;
   std::string restart;
-  int threads = 0;  // 0: keep the current default (set_default_threads)
+  int threads = 0;             // 0: keep the current default (set_default_threads)
+  bool fixed_threads = false;  // hold `threads` for the whole run (no thread governor)
   bool quiet = false;
   long max_steps = 0;  // stop after this many steps (bench); 0: no limit
   bool write_output = true;
@@ -24,7 +25,8 @@ struct RunResult {
   long steps = 0;
   double wall_seconds = 0, particle_steps_per_second = 0, neighbour_seconds = 0;
   int neighbour_builds = 0;
-  double mean_threads = 0;  // lower than the threads asked for while other processes were busy
+  double mean_threads = 0;     // lower than the threads asked for while other processes were busy
+  bool fixed_threads = false;  // --fixed-threads: held at the threads asked for
   long configuration_updates = 0;  // pair-geometry updates (fewer with dual-criteria steps)
   std::map<std::string, double> pass_seconds;  // wall seconds of each pass in the timed steps
 };

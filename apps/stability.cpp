@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/input_file.hpp"
 #include "core/types.hpp"
 #include "parallel/threads.hpp"
 #include "processes.hpp"
@@ -32,14 +33,9 @@ struct SuiteScene {
 };
 
 std::vector<SuiteScene> read_suite(const std::string& file) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::BadFile&) {
-    throw InputError("stability: cannot read the suite file " + file);
-  } catch (const YAML::Exception& e) {
-    throw InputError("stability: " + file + ": " + e.msg);
-  }
+  const std::string text =
+      read_input_file(file, "stability: cannot read the suite file " + file, kMaxSceneBytes);
+  YAML::Node root = parse_scene_yaml(text, "stability: " + file);
   std::vector<SuiteScene> out;
   try {
     check_yaml_tree(root, file);
@@ -121,6 +117,7 @@ int run_stability(const StabilityOptions& opt) {
     ChildRun c{
         {"run", s.file, "--out", dir.string(), "--quiet", "--threads", std::to_string(threads)},
         dir / "run.log"};
+    if (opt.fixed_threads) c.args.push_back("--fixed-threads");
     if (opt.quick)
       for (const auto& q : s.quick) c.args.push_back("--set"), c.args.push_back(q);
     jobs.push_back(std::move(c));

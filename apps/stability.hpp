@@ -13,6 +13,7 @@ struct StabilityOptions {
   bool quick = false;             // each scene's reduced run (`quick` overrides): CI
   int jobs = 1;                   // scenes at once (processes)
   int threads = 0;                // threads per run (default: the cores / jobs)
+  bool fixed_threads = false;     // runs hold their thread count (run --fixed-threads)
 };
 
 // Returns 0 when every check of every scene passed, 5 when one failed or a run stopped, 2 on

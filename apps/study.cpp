@@ -261,6 +261,7 @@ int run_study(const StudyOptions& opt) {
     ChildRun c{{"run", opt.scene, "--out", r.dir.string(), "--quiet", "--threads",
                 std::to_string(threads)},
                r.dir / "study.log"};
+    if (opt.fixed_threads) c.args.push_back("--fixed-threads");
     for (const auto& s : r.sets) c.args.push_back("--set"), c.args.push_back(s);
     jobs.push_back(std::move(c));
   }

@@ -13,6 +13,7 @@ struct StudyOptions {
   std::string metric;                  // reference metric to plot (default: the scene's first)
   int jobs = 1;                        // runs at once (separate processes)
   int threads = 0;                     // threads per run (0: the cores / jobs)
+  bool fixed_threads = false;          // runs hold their thread count (run --fixed-threads)
   bool plot_value = false;             // plot the metric's value, not its relative error
   std::string against;  // a --vary key: plot the metric's value against it (linear axes)
 };

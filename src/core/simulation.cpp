@@ -112,6 +112,7 @@ bool Simulation<D>::update_neighbours() {
   bool need = rebuild_requested_ || nb_.needs_rebuild(p_);
   if (dec_) need = comm_.max(long(need)) > 0;
   if (!need) return false;
+  listed_ = false;
   rebuild_requested_ = false;
   const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
   for (auto& m : modules_) m->before_rebuild(*this);
@@ -176,6 +177,7 @@ bool Simulation<D>::update_neighbours() {
   }
   set_loop_schedule();
   for (auto& m : modules_) m->on_rebuild(*this);
+  listed_ = true;
   return true;
 }
 

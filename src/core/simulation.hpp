@@ -159,6 +159,7 @@ class Simulation {
   void rebuild_neighbours();
   // Diagnostic fields (e.g. the disorder measure) before output or probes.
   void diagnostics() {
+    if (!listed_) return;  // a rebuild stopped half-way (a particle left the domain): no pairs
     if (skipped_rows_) update_pair_cache(PairRows::all);
     for (auto& m : modules_) m->diagnostics(*this);
   }
@@ -290,6 +291,7 @@ class Simulation {
   std::vector<double> damping_;  // per body: mass-proportional damping rate [1/s]
   bool damped_ = false;
   double t_ = 0, dt_ = 0, dt0_ = 0;
+  bool listed_ = false;          // the neighbour list and pair cache fit the particles
   double t_configuration_ = -1;  // dual-criteria: time of the next configuration update
   long configuration_updates_ = 0;
   long step_ = 0;

@@ -16,7 +16,8 @@ namespace monosph {
 std::string check_checkpoint_data(const std::vector<Field>& fields, const CheckpointMeta& meta);
 
 // Index fields against the scene the checkpoint holds: phase, material, body, boundary, cluster
-// (with the clusters.count of the module state). Throws InputError("checkpoint FILE: ...").
+// (with the clusters.count of the module state), and positions within the domain. Throws
+// InputError("checkpoint FILE: ...").
 template <int D>
 void check_checkpoint_indices(const std::filesystem::path& file, const Particles<D>& p,
                               const CheckpointMeta& meta, const Scene& scene);

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/input_file.hpp"
 #include "core/types.hpp"
 #include "output/atomic_file.hpp"
 
@@ -28,13 +29,6 @@ bool parse_number(std::string_view s, double& v) {
   if (s.empty()) return false;
   auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
-
-std::string file_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace
@@ -121,7 +115,8 @@ void ProbeCsv::resume(const fs::path& file, const fs::path& from,
       const fs::path src = here ? file : from;
       long k = 0;
       if (here || (!from.empty() && fs::exists(from, ec))) {
-        const std::string text = file_text(src);
+        const std::string text =  // a FIFO or device there would block the restart
+            read_input_file(src.string(), "restart: cannot read " + src.string(), 0);
         const std::size_t keep = probe_csv_prefix(text, header_of(columns), columns.size() + 2,
                                                   rows, time, src.string(), k);
         if (here) {

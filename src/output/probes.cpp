@@ -1,5 +1,7 @@
 #include "output/probes.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -459,12 +461,16 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
 }
 
 double measure_series(const std::string& measure, const std::vector<double>& t,
-                      const std::vector<double>& y, double start) {
+                      const std::vector<double>& y, double start, std::string* why) {
   std::vector<double> tt, yy;
   for (std::size_t k = 0; k < t.size(); ++k)
     if (t[k] >= start) tt.push_back(t[k]), yy.push_back(y[k]);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (tt.empty()) return nan;
+  auto none = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return nan;
+  };
+  if (tt.empty()) return none(fmt::format("no probe sample at or after t = {:g} s", start));
   if (measure == "final") return yy.back();
   if (measure == "max") return *std::max_element(yy.begin(), yy.end());
   if (measure == "min") return *std::min_element(yy.begin(), yy.end());
@@ -481,12 +487,12 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
     // last whole oscillation cycle, relative to the first. Cycles run between upward crossings of
     // the residual from a least-squares line; without two cycles, the line's change is used.
     const double n = static_cast<double>(tt.size());
-    if (tt.size() < 2) return nan;
+    if (tt.size() < 2) return none("fewer than two probe samples");
     const double tm = std::accumulate(tt.begin(), tt.end(), 0.0) / n;
     double stt = 0, sty = 0;
     for (std::size_t k = 0; k < tt.size(); ++k)
       stt += (tt[k] - tm) * (tt[k] - tm), sty += (tt[k] - tm) * (yy[k] - mean);
-    if (!(stt > 0)) return nan;
+    if (!(stt > 0)) return none("all probe samples at one time");
     const double b = sty / stt;
     auto res = [&](std::size_t k) { return yy[k] - mean - b * (tt[k] - tm); };
     double rms = 0;
@@ -523,7 +529,9 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
     std::vector<double> peaks;
     for (std::size_t k = 1; k + 1 < yy.size(); ++k)
       if (yy[k] > yy[k - 1] && yy[k] >= yy[k + 1] && yy[k] > yy[0]) peaks.push_back(yy[k] - yy[0]);
-    if (peaks.size() < 2) return nan;
+    if (peaks.size() < 2)
+      return none(
+          fmt::format("fewer than two peaks above the first sample (found {})", peaks.size()));
     return peaks.back() / peaks.front();
   }
   // frequency / period from the upward zero crossings of y - mean (linear interpolation);
@@ -533,12 +541,16 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
     const double a = yy[k - 1] - mean, b = yy[k] - mean;
     if (a < 0 && b >= 0) cross.push_back(tt[k - 1] + (tt[k] - tt[k - 1]) * a / (a - b));
   }
-  if (cross.size() < 2) return nan;
+  if (cross.size() < 2)
+    return none(
+        fmt::format("fewer than two upward crossings of the mean (found {}): the run "
+                    "is shorter than one period, or the probe does not oscillate",
+                    cross.size()));
   const double f = (cross.size() - 1) / (cross.back() - cross.front());
   if (measure == "frequency") return f;
   if (measure == "angular_frequency") return 2 * std::numbers::pi * f;
   if (measure == "period") return 1.0 / f;
-  return nan;
+  return none("unknown measure '" + measure + "'");
 }
 
 template class Probes<2>;

@@ -49,8 +49,9 @@ class Probes {
 std::vector<long> piece_sizes(const std::vector<double>& xyz, int dim, double link);
 
 // Evaluates a reference measure on the series (t, y) restricted to t >= start.
-// Returns NaN when the series cannot give it (e.g. fewer than two zero crossings).
+// Returns NaN when the series cannot give it (e.g. fewer than two zero crossings), and then the
+// reason in *why.
 double measure_series(const std::string& measure, const std::vector<double>& t,
-                      const std::vector<double>& y, double start);
+                      const std::vector<double>& y, double start, std::string* why = nullptr);
 
 }  // namespace monosph

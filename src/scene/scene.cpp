@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/input_file.hpp"
 #include "scene/expression.hpp"
 #include "scene/scene_parts.hpp"
 #include "scene/scene_probes.hpp"
@@ -208,14 +209,8 @@ Scene load_scene_text(const std::string& text, const std::vector<std::string>& o
 }
 
 Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": cannot read scene file (it is a folder)");
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot read scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return load_scene_text(ss.str(), overrides, path);
+  const std::string text = read_input_file(path, path + ": cannot read scene file", kMaxSceneBytes);
+  return load_scene_text(text, overrides, path);
 }
 
 }  // namespace monosph

@@ -149,18 +149,41 @@ void check_boundaries(const Scene& s, const std::vector<double>& times) {
 
 }  // namespace
 
+namespace {
+// The code point of a bidirectional embedding, override or isolate (U+202A-U+202E,
+// U+2066-U+2069) that starts at text[i], else 0: they make a file name display reversed.
+unsigned bidi_control_at(const std::string& text, std::size_t i) {
+  if (i + 2 >= text.size() || static_cast<unsigned char>(text[i]) != 0xE2) return 0;
+  const auto b1 = static_cast<unsigned char>(text[i + 1]);
+  const auto b2 = static_cast<unsigned char>(text[i + 2]);
+  const unsigned cp = 0x2000 + ((b1 & 0x3F) << 6) + (b2 & 0x3F);
+  if ((b1 >> 6) != 2 || (b2 >> 6) != 2) return 0;
+  return (cp >= 0x202A && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069) ? cp : 0;
+}
+}  // namespace
+
+bool has_controls(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    if (u < 0x20 || u == 0x7f || bidi_control_at(text, i) != 0) return true;
+  }
+  return false;
+}
+
 std::string printable(const std::string& text) {
   std::string out;
-  for (char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x20 && u != 0x7f) {
-      out.push_back(c);
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (const unsigned cp = bidi_control_at(text, i)) {
+      out += fmt::format("\\u{:04X}", cp);
+      i += 2;
       continue;
     }
-    const char* hex = "0123456789abcdef";
-    out += "\\x";
-    out.push_back(hex[u >> 4]);
-    out.push_back(hex[u & 15]);
+    const auto u = static_cast<unsigned char>(text[i]);
+    if (u >= 0x20 && u != 0x7f) {
+      out.push_back(text[i]);
+      continue;
+    }
+    out += fmt::format("\\x{:02x}", u);
   }
   return out;
 }
@@ -168,12 +191,11 @@ std::string printable(const std::string& text) {
 void check_name(const std::string& name) {
   if (name.empty()) scene_error("name", "must not be empty (it names the output files)");
   if (name.size() > 200) scene_error("name", "longer than 200 characters");
-  const bool control = std::any_of(name.begin(), name.end(), [](char c) {
-    return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
-  });
-  if (name == "." || name == ".." || control || name.find_first_of("/\\") != std::string::npos)
+  if (name == "." || name == ".." || has_controls(name) ||
+      name.find_first_of("/\\") != std::string::npos)
     scene_error("name", fmt::format("'{}' is not a plain file name (it names the output files: "
-                                    "no /, \\, control characters, . or ..)",
+                                    "no /, \\, control characters, bidirectional controls "
+                                    "U+202A-U+202E and U+2066-U+2069, . or ..)",
                                     printable(name)));
 }
 

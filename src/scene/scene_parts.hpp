@@ -14,7 +14,6 @@ namespace monosph {
 
 // scene_yaml.cpp: the YAML text, checked as a tree (every key a plain, unique name; every
 // scalar valid UTF-8), and the command line's --set overrides.
-YAML::Node parse_scene_yaml(const std::string& text, const std::string& origin);
 void apply_override(YAML::Node& root, const std::string& item);
 
 // scene_materials.cpp: one entry of `materials`.
@@ -44,7 +43,10 @@ void read_limits(MapReader& root, Scene& s);
 // scene_checks.cpp: checks of the whole scene once read: expressions that evaluate to a
 // non-finite value, the `name` as a file name, the size guard.
 void check_name(const std::string& name);
-std::string printable(const std::string& text);  // control characters as \xNN: one line
+// Control characters, or bidirectional controls (U+202A-U+202E, U+2066-U+2069: a file name with
+// one displays reversed); printable() writes them as \xNN / \uNNNN (one line, in order).
+bool has_controls(const std::string& text);
+std::string printable(const std::string& text);
 void check_scene_expressions(const Scene& s);
 void check_size(const Scene& s);
 

@@ -198,13 +198,10 @@ void check_body(const std::string& p, const ProbeSpec& ps, const Scene& s) {
 // A probe's name is a CSV column (and a profile's file name): plain text.
 void check_probe_name(const std::string& name, const std::string& path) {
   if (name.empty()) scene_error(path, "must not be empty (it names a column of probes.csv)");
-  const bool bad = std::any_of(name.begin(), name.end(), [](char c) {
-    return c == ',' || c == '"' || c == '/' || c == '\\' || static_cast<unsigned char>(c) < 0x20;
-  });
-  if (bad)
+  if (has_controls(name) || name.find_first_of(",\"/\\") != std::string::npos)
     scene_error(path, "'" + printable(name) +
                           "' is not a column name (no commas, quotes, slashes or control "
-                          "characters)");
+                          "characters, bidirectional ones included)");
 }
 
 // The columns a probe writes: its name, or name_x, name_y (, name_z); a profile its file.

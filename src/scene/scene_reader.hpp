@@ -47,6 +47,10 @@ class MapReader {
   std::set<std::string> used_;
 };
 
+// scene_yaml.cpp: the first document of a YAML text; aliases that form a cycle or expand it by
+// more than a million nodes are refused, merge keys (<<) resolved. `origin` names the file.
+YAML::Node parse_scene_yaml(const std::string& text, const std::string& origin);
+
 // Every map key of the tree a plain, unique name, every text valid UTF-8 (yaml-cpp accepts
 // complex keys and keeps both entries of a key given twice). `origin` names the file.
 void check_yaml_tree(const YAML::Node& root, const std::string& origin);

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "core/input_file.hpp"
 #include "scene/scene_parts.hpp"
 
 namespace monosph {
@@ -107,9 +108,7 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
     if (f.is_relative()) f = folder / f;
     std::error_code ec;
     f = std::filesystem::absolute(f, ec).lexically_normal();
-    std::ifstream in(f, std::ios::binary);
-    if (!in || std::filesystem::is_directory(f, ec))
-      scene_error(g, "cannot read STL file '" + f.string() + "'");
+    check_input_file(f.string(), g + ": cannot read STL file '" + f.string() + "'", kMaxStlBytes);
     s.file = f.string();
     node["stl"] = s.file;  // absolute in the stored scene text, so that a restart finds it
   }

@@ -1,15 +1,130 @@
 // The scene's YAML: parsing, checks of the whole tree, and the command line's --set overrides.
+#include <fmt/format.h>
+#include <yaml-cpp/eventhandler.h>
+
 #include <cstdint>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "scene/scene_parts.hpp"
 
 namespace monosph {
 
+namespace {
+
+// Anchors and aliases, checked on the parser's events before a tree is built: yaml-cpp builds an
+// alias as a shared node, so an alias inside the block it names makes a cycle that every pass
+// over the tree would follow without end, and nested aliases ("billion laughs": nine references a
+// level) make a tree that every pass visits in full. Each alias is counted here once, at the
+// size of the block it names.
+class AliasCheck : public YAML::EventHandler {
+ public:
+  static constexpr double kMaxAliasNodes = 1e6;  // nodes that aliases may add to the written ones
+  explicit AliasCheck(std::string origin) : origin_(std::move(origin)) {}
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& m, YAML::anchor_t a) override { node(m, a, 1); }
+  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t a,
+                const std::string&) override {
+    node(m, a, 1);
+  }
+  void OnAlias(const YAML::Mark& m, YAML::anchor_t a) override {
+    for (const auto& f : open_)
+      if (f.anchor == a)
+        fail(m, "an alias refers to the block that contains it (line " +
+                    std::to_string(f.line + 1) + "): the scene would be endless");
+    added_ += size_[a];
+    if (added_ > kMaxAliasNodes)
+      fail(m, fmt::format("aliases expand the scene by more than {:.0f} nodes; write the "
+                          "repeated block out or nest fewer aliases",
+                          kMaxAliasNodes));
+    count(size_[a]);
+  }
+  void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t a,
+                       YAML::EmitterStyle::value) override {
+    open_.push_back({a, m.line, 1});
+  }
+  void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t a,
+                  YAML::EmitterStyle::value) override {
+    open_.push_back({a, m.line, 1});
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapEnd() override { close(); }
+
+ private:
+  struct Block {
+    YAML::anchor_t anchor;
+    int line;
+    double nodes;  // with the blocks its aliases name
+  };
+  void node(const YAML::Mark&, YAML::anchor_t a, double n) {
+    if (a) size_[a] = n;
+    count(n);
+  }
+  void count(double n) {
+    if (!open_.empty()) open_.back().nodes += n;
+  }
+  void close() {
+    const Block b = open_.back();
+    open_.pop_back();
+    if (b.anchor) size_[b.anchor] = b.nodes;
+    count(b.nodes);
+  }
+  [[noreturn]] void fail(const YAML::Mark& m, const std::string& msg) const {
+    throw InputError(origin_ + ": line " + std::to_string(m.line + 1) + ": " + msg);
+  }
+  std::string origin_;
+  std::vector<Block> open_;
+  std::map<YAML::anchor_t, double> size_;
+  double added_ = 0;
+};
+
+// `<<` (the YAML merge key, which yaml-cpp leaves as a plain key): the keys of the map, or of
+// each map of the list, that it names are added where the map does not give them itself (earlier
+// maps of the list first). The tree has no cycles (AliasCheck).
+void merge_keys(YAML::Node n) {
+  if (n.IsSequence())
+    for (std::size_t i = 0; i < n.size(); ++i) merge_keys(n[i]);
+  if (!n.IsMap()) return;
+  YAML::Node from;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    if (it->first.IsScalar() && it->first.Scalar() == "<<" && it->first.Tag() != "!")
+      from = it->second;
+    else
+      merge_keys(it->second);
+  }
+  if (!from || !(from.IsMap() || from.IsSequence())) return;  // reported as an unknown key
+  std::vector<YAML::Node> maps;
+  if (from.IsMap()) maps.push_back(from);
+  for (std::size_t i = 0; from.IsSequence() && i < from.size(); ++i) maps.push_back(from[i]);
+  for (auto& m : maps) {
+    if (!m.IsMap()) return;  // a list of something else: left for the checks to name
+    merge_keys(m);
+  }
+  n.remove("<<");
+  for (const auto& m : maps)
+    for (auto it = m.begin(); it != m.end(); ++it)
+      if (it->first.IsScalar() && !std::as_const(n)[it->first.Scalar()])
+        n[it->first.Scalar()] = it->second;
+}
+
+// The first document of the text (the one YAML::Load reads), aliases checked, merge keys resolved.
+YAML::Node load_checked(const std::string& text, const std::string& origin) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  AliasCheck aliases(origin);
+  parser.HandleNextDocument(aliases);
+  YAML::Node root = YAML::Load(text);
+  merge_keys(root);
+  return root;
+}
+
+}  // namespace
+
 YAML::Node parse_scene_yaml(const std::string& text, const std::string& origin) {
   try {
-    return YAML::Load(text);
+    return load_checked(text, origin);
   } catch (const YAML::ParserException& e) {
     throw InputError(origin + ": invalid YAML at line " + std::to_string(e.mark.line + 1) +
                      ", column " + std::to_string(e.mark.column + 1) + ": " + e.msg);
@@ -107,7 +222,7 @@ void apply_override(YAML::Node& root, const std::string& item) {
     if (part.empty()) throw InputError("--set " + key + ": empty key name (a.b.c=value)");
   YAML::Node value_node;
   try {
-    value_node = YAML::Load(value);
+    value_node = load_checked(value, "--set " + item + ": invalid value");
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + item + ": invalid value: " + e.msg);
   }

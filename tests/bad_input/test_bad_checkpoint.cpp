@@ -218,6 +218,12 @@ const Case kCases[] = {
     {"position_nan",
      [](auto f) { H5Edit(f).set("/fields/position", 0, 0, kNaN); },
      {"position", "non-finite"}},
+    // 1 km outside a 4 cm domain: the restart's first rebuild stopped with exit 3 and left only
+    // .lock (no frame, no summary).
+    {"position_outside_domain",
+     [](auto f) { H5Edit(f).set("/fields/position", 5, 1, 1000.0); },
+     {"field 'position', particle 5", "y = 1000 lies outside the domain [-0.001, 0.03]",
+      "damaged"}},
     {"mass_minus_inf",
      [](auto f) { H5Edit(f).set("/fields/mass", 1, 0, -kInf); },
      {"mass", "non-finite"}},

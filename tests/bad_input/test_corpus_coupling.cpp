@@ -35,7 +35,14 @@ const SceneCase kSurfaceCases[] = {
     {"stl_is_a_folder", kSolid3d,
      "triangles: [[[0.15, 0.001, 0.15], [0.19, 0.001, 0.15], [0.15, "
      "0.001, 0.19]]]",
-     "stl: /tmp", "surfaces[1] (wedge).stl: cannot read STL file '/tmp'"},
+     "stl: /tmp", "surfaces[1] (wedge).stl: cannot read STL file '/tmp' (it is a folder)"},
+    // A device never ends: it ran out of memory after 11 s (exit 4, std::bad_alloc).
+    {"stl_is_dev_zero", kSolid3d,
+     "triangles: [[[0.15, 0.001, 0.15], [0.19, 0.001, 0.15], [0.15, "
+     "0.001, 0.19]]]",
+     "stl: /dev/zero",
+     "surfaces[1] (wedge).stl: cannot read STL file '/dev/zero' (it is a character device, not "
+     "a regular file)"},
     {"surface_friction_negative", kGrains, "friction: 0.1}", "friction: -0.1}",
      "surfaces[0] (floor).friction: must not be negative"},
     {"poisson_without_stiffness", kGrains, "friction: 0.1}", "friction: 0.1, poisson_ratio: 0.3}",

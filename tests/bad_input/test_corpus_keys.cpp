@@ -27,6 +27,31 @@ const SceneCase kYaml[] = {
     {"unknown_alias", kFluid, "dp: 0.01", "dp: *fine", "invalid YAML at line 4"},
     {"tab_indent", kFluid, "    phase: wall", "\tphase: wall", "invalid YAML at line"},
     {"null_required_key", kFluid, "dp: 0.01", "dp:", "dp: missing (required)"},
+    // Aliases: one inside the block it names, a merge key of its own map (both a cycle that made
+    // the tree check recurse until SIGSEGV), nine levels of nine aliases (3.9e8 nodes expanded).
+    {"alias_cycle_in_list", kFluid, "bodies:\n  - name: tank\n",
+     "bodies: &b\n  - name: tank\n    seed: *b\n",
+     "line 14: an alias refers to the block that contains it (line 12)"},
+    {"merge_key_cycle", kFluid, "output: {every: 5.0e-6, checkpoint_every: 0}",
+     "output: &o {every: 5.0e-6, <<: *o}", "an alias refers to the block that contains it"},
+    {"billion_laughs", kFluid, "",
+     "lol0: &a0 [lol]\n"
+     "lol1: &a1 [*a0, *a0, *a0, *a0, *a0, *a0, *a0, *a0, *a0]\n"
+     "lol2: &a2 [*a1, *a1, *a1, *a1, *a1, *a1, *a1, *a1, *a1]\n"
+     "lol3: &a3 [*a2, *a2, *a2, *a2, *a2, *a2, *a2, *a2, *a2]\n"
+     "lol4: &a4 [*a3, *a3, *a3, *a3, *a3, *a3, *a3, *a3, *a3]\n"
+     "lol5: &a5 [*a4, *a4, *a4, *a4, *a4, *a4, *a4, *a4, *a4]\n"
+     "lol6: &a6 [*a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5, *a5]\n"
+     "lol7: &a7 [*a6, *a6, *a6, *a6, *a6, *a6, *a6, *a6, *a6]\n"
+     "lol8: &a8 [*a7, *a7, *a7, *a7, *a7, *a7, *a7, *a7, *a7]\n"
+     "lol9: &a9 [*a8, *a8, *a8, *a8, *a8, *a8, *a8, *a8, *a8]\n",
+     "aliases expand the scene by more than 1000000 nodes"},
+    // A merge key brings the keys of another block (YAML 1.1); a misspelt one beside them is named.
+    {"merge_key_beside_a_typo", kFluid,
+     "  water: {density: 1000, sound_speed: 10, viscosity: 1.0e-3}",
+     "  water: &w {density: 1000, sound_speed: 10, viscosity: 1.0e-3}\n  oil: {<<: *w, densty: "
+     "900}",
+     "materials.oil.densty: unknown key"},
 };
 
 const SceneCase kTopLevel[] = {
@@ -35,6 +60,11 @@ const SceneCase kTopLevel[] = {
     {"name_slash", kFluid, "name: corpus", "name: out/corpus",
      "name: 'out/corpus' is not a plain file name"},
     {"name_newline", kFluid, "name: corpus", "name: \"a\\nb\"", "is not a plain file name"},
+    // Bidirectional controls: "corpus\u202Eexe.txt" displays as "corpustxt.exe".
+    {"name_bidi_override", kFluid, "name: corpus", "name: \"corpus\\u202Eexe.txt\"",
+     "name: 'corpus\\u202Eexe.txt' is not a plain file name"},
+    {"name_bidi_isolate", kFluid, "name: corpus", "name: \"a\\u2067b\"",
+     "name: 'a\\u2067b' is not a plain file name"},
     {"name_too_long", kFluid, "name: corpus",
      "name: "
      "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa"

@@ -115,3 +115,17 @@ probes:
   EXPECT_NEAR(v1[0], v0[0], 1e-14);
   EXPECT_GT(std::abs(v1[1] - v0[1]), 1e-4);
 }
+
+TEST(Measures, WhatCannotBeMeasuredSaysWhy) {
+  std::vector<double> t, y;
+  series(0, 1, t, y);  // 40 periods of 0.25
+  std::string why;
+  EXPECT_NEAR(measure_series("period", t, y, 0, &why), 0.25, 1e-3);
+  EXPECT_EQ(why, "");
+  EXPECT_TRUE(std::isnan(measure_series("period", t, y, 9.8, &why)));  // one crossing after 9.8
+  EXPECT_EQ(why.rfind("fewer than two upward crossings of the mean (found 1)", 0), 0u) << why;
+  EXPECT_TRUE(std::isnan(measure_series("final", t, y, 11, &why)));
+  EXPECT_EQ(why, "no probe sample at or after t = 11 s");
+  EXPECT_TRUE(std::isnan(measure_series("peak_ratio", t, y, 9.9, &why)));
+  EXPECT_EQ(why, "fewer than two peaks above the first sample (found 0)");
+}

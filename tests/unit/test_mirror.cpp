@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim_helpers.hpp"
+#include "thread_helpers.hpp"
 
 using namespace monosph;
 
@@ -139,6 +140,7 @@ TEST(Mirror, ResultsIndependentOfThreadCount) {
   std::vector<std::vector<Vec<3>>> x(2);
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
+    EXPECT_EQ(test::team_size(), threads);
     auto half = test::build<3>(strip("0", ", mirror: [z_min]", false));
     while (half->time() < 0.003) half->advance(0.003);
     auto xs = half->particles().x();

@@ -13,6 +13,7 @@
 #include "rigid/rigid_surface_module.hpp"
 #include "rigid/surface.hpp"
 #include "scene/scene.hpp"
+#include "thread_helpers.hpp"
 
 using namespace monosph;
 
@@ -355,6 +356,7 @@ TEST(RigidSurface, ReactionIsMinusTheSumOfTheContactForces) {
   const Vec<2> r1 = rigid->reaction(0);
   const int before = omp_get_max_threads();
   omp_set_num_threads(2);
+  EXPECT_EQ(test::team_size(), 2);
   for (auto& a : p.a()) a.setZero();
   rigid->forces(sim);
   omp_set_num_threads(before);

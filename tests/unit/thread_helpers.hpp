@@ -7,12 +7,23 @@
 
 namespace monosph::test {
 
+// The threads a parallel region gets now: a test that claims thread-count independence checks
+// that its second run really had two.
+inline int team_size() {
+  int n = 0;
+#pragma omp parallel
+#pragma omp single
+  n = omp_get_num_threads();
+  return n;
+}
+
 // `make()` returns an initialised std::unique_ptr<Simulation<D>>; both runs take `steps` steps.
 template <int D, class Make>
 void expect_thread_independent(Make make, int steps) {
   const int before = omp_get_max_threads();
   auto run = [&](int threads) {
     omp_set_num_threads(threads);
+    EXPECT_EQ(team_size(), threads);
     auto sim = make();
     for (int k = 0; k < steps; ++k) sim->advance();
     return sim;

@@ -52,6 +52,15 @@ inline nlohmann::json summary(const std::string& dir) {
   return nlohmann::json::parse(in);
 }
 
+// A run of a thread-count comparison (--threads 2 --fixed-threads) really ran on two threads:
+// the thread governor would otherwise lower a run beside busy processes to one.
+inline void expect_two_threads(const std::string& dir) {
+  const auto js = summary(dir);
+  EXPECT_EQ(js["threads"], 2) << dir;
+  EXPECT_EQ(js["threads_fixed"], true) << dir;
+  EXPECT_EQ(js["threads_mean"], 2.0) << dir << ": not two threads throughout";
+}
+
 // probes.csv as named columns.
 struct Table {
   std::vector<std::string> head;

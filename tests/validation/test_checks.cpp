@@ -51,5 +51,29 @@ TEST(Checks, MalformedChecksNameTheKey) {
   EXPECT_NE(b.output.find("checks[0].probe"), std::string::npos) << b.output;
 }
 
+TEST(Checks, AMeasureThatCannotBeFormedSaysWhy) {
+  // 2 ms of a 5 ms period: no two upward crossings of the mean. The reference counts as reached
+  // (a frequency needs no window), so its missing value needs a reason in the summary and the
+  // closing lines; before, it was null with none.
+  const std::string dir = out_dir("checks_unmeasured");
+  auto r =
+      run_monosph("run " + source("cases/acoustic_wave/scene.yaml") + " --threads 1 --out " + dir +
+                  " --set dp=0.005 end_time=0.002 output.every=0"
+                  " 'checks=[{name: ringing, probe: mode, measure: period, max: 1}]'");
+  EXPECT_EQ(r.code, 5) << r.output;  // a check that cannot be measured fails
+  const auto js = summary(dir);
+  const auto& m = js["metrics"]["angular_frequency"];
+  EXPECT_TRUE(m["reached"].get<bool>());
+  EXPECT_TRUE(m["value"].is_null());
+  const std::string why = "fewer than two upward crossings of the mean (found ";
+  EXPECT_NE(m["why_no_value"].get<std::string>().find(why), std::string::npos) << m.dump();
+  EXPECT_NE(js["checks"]["ringing"]["why_no_value"].get<std::string>().find(why),
+            std::string::npos);
+  EXPECT_NE(r.output.find("angular_frequency could not be measured from probe 'mode': " + why),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("check ringing = not measured: " + why), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace monosph::test

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "parallel/threads.hpp"
 #include "run_helpers.hpp"
 
 using namespace monosph::test;
@@ -59,8 +60,11 @@ TEST(MultiRate, BitIdenticalOnOneAndTwoThreadsAndAfterARestart) {
       " --quiet --set time_step.multi_rate=true end_time=0.004 "
       "output.checkpoint_every=0.003";
   const std::string a = out_dir("multi_rate_t1"), b = out_dir("multi_rate_t2");
+  if (monosph::usable_cpus() < 2) GTEST_SKIP() << "one usable CPU: no second thread";
   ASSERT_EQ(run_monosph("run " + kScene + opts + " --threads 1 --out " + a).code, 0);
-  ASSERT_EQ(run_monosph("run " + kScene + opts + " --threads 2 --out " + b).code, 0);
+  ASSERT_EQ(run_monosph("run " + kScene + opts + " --threads 2 --fixed-threads --out " + b).code,
+            0);
+  expect_two_threads(b);
   expect_same_checkpoint(a + "/final.h5", b + "/final.h5");
   // From the checkpoint at 3 ms to the end again.
   auto r = run_monosph("run --restart " + a + "/checkpoint.h5 --out " + b + " --threads 1 --quiet");

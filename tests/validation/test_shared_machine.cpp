@@ -41,5 +41,25 @@ TEST(SharedMachine, TwoThreadsDropToOneWhileOtherProcessesHoldTheCpus) {
   expect_same_checkpoint(alone + "/final.h5", shared + "/final.h5");
 }
 
+TEST(SharedMachine, FixedThreadsHoldTwoThreadsWhileOtherProcessesHoldTheCpus) {
+  // --fixed-threads: a thread-count comparison on a busy machine still compares two threads with
+  // one (the governor would run both on one thread and the comparison would check nothing).
+  const int cpus = usable_cpus();
+  if (cpus < 2) GTEST_SKIP() << "one usable CPU: a run has one thread anyway";
+  // 60 steps of the dam break: 0.15 s alone, some seconds on two threads beside busy processes.
+  const std::string args = "run " + source("cases/dam_break/scene.yaml") +
+                           " --steps 60 --set output.every=0 --quiet --threads ";
+  const std::string fixed = out_dir("shared_machine_fixed"), alone = out_dir("shared_machine_1");
+  {
+    BusyChildren busy(cpus);
+    ASSERT_EQ(static_cast<int>(busy.pids.size()), cpus);
+    auto r = run_monosph(args + "2 --fixed-threads --out " + fixed);
+    ASSERT_EQ(r.code, 0) << r.output;
+  }
+  expect_two_threads(fixed);
+  ASSERT_EQ(run_monosph(args + "1 --out " + alone).code, 0);
+  expect_same_checkpoint(alone + "/final.h5", fixed + "/final.h5");
+}
+
 }  // namespace
 }  // namespace monosph::test

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "parallel/threads.hpp"
 #include "run_helpers.hpp"
 
 using namespace monosph::test;
@@ -132,8 +133,10 @@ TEST(SolidContact, SphereCollisionIsBitIdenticalOnOneAndTwoThreads) {
   const std::string args =
       "run " + source("tests/scenes/sphere_collision.yaml") + " --quiet --steps 150 --out ";
   const std::string a = out_dir("solid_contact_threads1"), b = out_dir("solid_contact_threads2");
+  if (monosph::usable_cpus() < 2) GTEST_SKIP() << "one usable CPU: no second thread";
   ASSERT_EQ(run_monosph(args + a + " --threads 1").code, 0);
-  ASSERT_EQ(run_monosph(args + b + " --threads 2").code, 0);
+  ASSERT_EQ(run_monosph(args + b + " --threads 2 --fixed-threads").code, 0);
+  expect_two_threads(b);
   monosph::Particles<3> pa, pb;
   auto ma = monosph::read_checkpoint<3>(a + "/final.h5", pa);
   auto mb = monosph::read_checkpoint<3>(b + "/final.h5", pb);
