@@ -171,6 +171,9 @@ const SceneCase kTimeStep[] = {
      "output.checkpoint_every: expected a number, got 'often'"},
     {"output_fields_a_map", kFluid, "checkpoint_every: 0}", "checkpoint_every: 0, fields: {a: 1}}",
      "output.fields: expected a list, got a map"},
+    // Steps end on checkpoint times: 1e-12 s made a 0.01 s run take 1e10 steps (and print nothing).
+    {"output_checkpoint_every_tiny", kFluid, "checkpoint_every: 0}", "checkpoint_every: 1.0e-12}",
+     "output.checkpoint_every: 1e-12 s is shorter than the time step ("},
 };
 
 const SceneCase kMaterials[] = {
