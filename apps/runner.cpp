@@ -159,6 +159,7 @@ Schedule start(Simulation<D>& sim, const CheckpointMeta* restart_meta,
     next.probe = get("next_probe", 0);
     next.checkpoint = get("next_checkpoint", scene.checkpoint_every);
     sim.set_substeps(static_cast<int>(get("substeps", 1)));
+    sim.load_state(restart_meta->scalars);
     for (const auto& m : sim.modules()) m->load_state(sim, restart_meta->scalars);
     sim.init(true);
   } else {
@@ -299,11 +300,14 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   auto checkpoint = [&](const fs::path& file) {
     ckpt_step = sim.step();
     csv.flush();  // the rows the checkpoint counts are in the file
-    // The restarted run starts from the same list (bit-identical). Only once per step: a second
-    // rebuild at the same positions still moves the solids' reference state by round-off (the
-    // final checkpoint right after a periodic one).
-    if (sim.step() != rebuilt_step) sim.rebuild_neighbours(), rebuilt_step = sim.step();
+    // A run with ghosts or dual-criteria stepping rebuilds first: its restart starts from the
+    // same list (bit-identical on one rank). Only once per step: a second rebuild at the same
+    // positions still moves the solids' reference state by round-off (the final checkpoint right
+    // after a periodic one). Other runs keep the state of their last rebuild (Simulation).
+    if (sim.checkpoint_rebuilds() && sim.step() != rebuilt_step)
+      sim.rebuild_neighbours(), rebuilt_step = sim.step();
     CheckpointMeta meta = checkpoint_meta(sim, next, csv.rows());
+    sim.save_state(meta.scalars);
     probes.save_state(meta.scalars);
     for (const auto& m : sim.modules()) m->save_state(meta.scalars);
     write_checkpoint<D>(file, p, sim.owned(), meta, comm);

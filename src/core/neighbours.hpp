@@ -45,6 +45,7 @@ class Neighbours {
   double skin() const { return skin_; }
   std::size_t pairs() const { return nbr_.size(); }
   int builds() const { return builds_; }
+  void set_builds(int n) { builds_ = n; }  // a restart: the rebuilds before its checkpoint
   double build_seconds() const { return build_seconds_; }
 
   // Pair range of particle i: k in [begin(i), end(i)), neighbour j = nbr(k).

@@ -59,6 +59,8 @@ Simulation<D>::Simulation(Scene scene) : scene_(std::move(scene)) {
   }
   removed_mass_.assign(bodies_.size(), 0.0);
   set_loop_schedule();
+  kxb_ = p_.add_field("build_position", D);  // the state of the last rebuild (restart.cpp)
+  krb_ = p_.add_field("build_density", 1);
   if (scene_.newmark_gamma != 0.5) kaprev_ = p_.add_field("previous_acceleration", D);
   if (scene_.multi_rate) {  // multi_rate.cpp
     kas_ = p_.add_field("slow_acceleration", D);
@@ -114,8 +116,11 @@ bool Simulation<D>::update_neighbours() {
   if (!need) return false;
   listed_ = false;
   rebuild_requested_ = false;
-  const bool reorder = scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
-  for (auto& m : modules_) m->before_rebuild(*this);
+  // Restoring the last rebuild (restart.cpp): the particles are in its order already.
+  const bool reorder =
+      !restoring_ && scene_.reorder_every > 0 && nb_.builds() % scene_.reorder_every == 0;
+  if (!restoring_)
+    for (auto& m : modules_) m->before_rebuild(*this);
   const std::size_t own = owned();
   std::vector<float> work;  // MPI: cost of each owned particle, for the balance
   if (mirror_) {            // images are made anew below
@@ -176,6 +181,7 @@ bool Simulation<D>::update_neighbours() {
     throw RunAborted(os.str());
   }
   set_loop_schedule();
+  keep_build_state();
   for (auto& m : modules_) m->on_rebuild(*this);
   listed_ = true;
   return true;
@@ -481,32 +487,6 @@ double Simulation<D>::compute_dt() {
   for (auto& m : modules_) dt = std::min(dt, m->max_dt(*this));
   if (scene_.max_dt > 0) dt = std::min(dt, scene_.max_dt);
   return comm_.min(dt);
-}
-
-template <int D>
-void Simulation<D>::init(bool restarted) {
-  read_rows_.assign(bodies_.size(), 0);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-    for (const auto& m : modules_) read_rows_[b] = read_rows_[b] || m->reads_pair_rows(int(b));
-  skipped_rows_ = std::find(read_rows_.begin(), read_rows_.end(), 0) != read_rows_.end();
-  if (restarted) {
-    rebuild_requested_ = true;
-    update_neighbours();
-    update_pair_cache(PairRows::read);
-    if (dt_ <= 0) dt_ = scene_.multi_rate ? compute_dt_multi_rate() : compute_dt();
-    dt0_ = dt_;
-    keep_acceleration();
-    return;
-  }
-  rebuild_requested_ = true;
-  update_neighbours();
-  apply_bc_velocity(t_);
-  if (scene_.multi_rate) return init_multi_rate();
-  compute_forces();
-  keep_acceleration();
-  check_guards();
-  dt_ = compute_dt();
-  dt0_ = dt_;
 }
 
 template <int D>

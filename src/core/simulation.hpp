@@ -46,6 +46,8 @@ class Module {
   virtual void before_rebuild(Simulation<D>&) {}    // a rebuild follows (old list valid)
   virtual void diagnostics(Simulation<D>&) {}       // fields for output and probes only
   virtual void on_rebuild(Simulation<D>&) {}        // after a neighbour-list rebuild
+  // After a restart's first rebuild, at the checkpoint's positions (Simulation::init(true)).
+  virtual void restarted(Simulation<D>&) {}
   virtual void kicked(Simulation<D>&, double h) {}  // after every (half) kick of length h
   // Module state that is not a particle field, for checkpoints ("<module>.<key>" -> value).
   virtual void save_state(std::map<std::string, double>&) const {}
@@ -155,8 +157,21 @@ class Simulation {
   // Recomputes the pair list (PairList) and the volumes at the current state: needed after moving
   // particles or changing densities by hand (tests); a step does it itself.
   void update_pair_cache() { update_pair_cache(PairRows::all); }
-  // Rebuilds the neighbour list now (used before checkpoints so restarts are bit-identical).
+  // Rebuilds the neighbour list now (before a checkpoint when checkpoint_rebuilds()).
   void rebuild_neighbours();
+  // Restarts (restart.cpp). Every rebuild keeps its positions and densities as the fields
+  // build_position and build_density, so that a restart on one rank without symmetry planes
+  // rebuilds from them the list and reference data that rebuild made (bit-identical). A
+  // checkpoint then needs no rebuild of its own, which the uninterrupted run would not have had;
+  // runs with ghosts (ranks, mirror images: made at a rebuild, not in the checkpoint) or
+  // dual-criteria stepping (its pair set is that of the last configuration update) still make one.
+  bool checkpoint_rebuilds() const { return dec_ || mirror_ || scene_.advection_cfl > 0; }
+  // During the restart's rebuild that restores the last one: on_rebuild finds the positions and
+  // densities of then and keeps the state the checkpoint holds (reference configurations).
+  bool restoring() const { return restoring_; }
+  // State that is neither a particle field nor a module's ("sim.<key>" -> value).
+  void save_state(std::map<std::string, double>& s) const;
+  void load_state(const std::map<std::string, double>& s);
   // Diagnostic fields (e.g. the disorder measure) before output or probes.
   void diagnostics() {
     if (!listed_) return;  // a rebuild stopped half-way (a particle left the domain): no pairs
@@ -258,6 +273,9 @@ class Simulation {
   void body_acceleration();        // a = body force - damping
   bool update_neighbours();        // true when the lists were rebuilt
   void set_loop_schedule() const;  // dynamic chunks for the schedule(runtime) loops
+  void keep_build_state();         // positions and densities of the rebuild just made
+  void restore_build_state();      // the restart's rebuild, at the last rebuild's state
+  void flag_pending_removals();    // the checkpoint's removals for the next rebuild
   // Rows of the pair list to fill: those a module reads, of those only the solids' (multi-rate
   // sub-steps), or all (diagnostics, probes, tests).
   enum class PairRows { read, read_solids, all };
@@ -304,6 +322,12 @@ class Simulation {
   std::vector<int> group_, jmin_;
   long min_i_ = -1, min_j_ = -1;
   bool rebuild_requested_ = false;
+  // Fields build_position and build_density; the restart's rebuild that restores them; what the
+  // checkpoint held (load_state): a build state, the rebuilds so far, pending removals (ids).
+  int kxb_ = -1, krb_ = -1;
+  bool restoring_ = false, restore_ = false, rebuild_pending_ = false;
+  int builds_before_ = 0;
+  std::vector<std::int64_t> pending_ids_;
   std::vector<char> read_rows_;  // per body: a module reads its pair rows (reads_pair_rows)
   bool skipped_rows_ = false;    // some body's rows are left empty during steps
   // Multi-rate: fields a_slow (all), a_fast and the mean velocity and acceleration over the

@@ -430,6 +430,10 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
     const Mat<D> lref = invert_correction<D>(b);  // MMB Eq. 9 in the reference configuration
     for (std::size_t k = rstart_[i]; k < rstart_[i + 1]; ++k) rg_[k] = lref * rg_[k];
   }
+  if (tl_) tl_->on_rebuild(sim);  // total-Lagrangian reference pairs: built once, then re-mapped
+  // A restart's rebuild restoring the last one (Simulation::restoring): F_ref, X_ref and F are
+  // those of the checkpoint, which that rebuild's reset below and the steps since made.
+  if (sim.restoring()) return;
   // F_ref = I now: F = F_init; the reference positions are the current ones.
   auto F = p.template view<Mat<D>>(kF_);
   auto Fi = p.template view<Mat<D>>(kFinit_);
@@ -439,7 +443,6 @@ void SolidModule<D>::on_rebuild(Simulation<D>& sim) {
     Fr[i] = Mat<D>::Identity(), Xr[i] = x[i];
     if (eulerian(ph[i], bd[i]) || ph[i] != kSolid) F[i] = Fi[i];
   }
-  if (tl_) tl_->on_rebuild(sim);  // total-Lagrangian reference pairs: built once, then re-mapped
 }
 
 template <int D>

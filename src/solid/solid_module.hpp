@@ -42,6 +42,9 @@ class SolidModule : public Module<D> {
   void forces(Simulation<D>& sim) override;
   void before_rebuild(Simulation<D>& sim) override;
   void on_rebuild(Simulation<D>& sim) override;
+  void restarted(Simulation<D>& sim) override {
+    if (tl_) tl_->restarted(sim);
+  }
   double max_dt(Simulation<D>& sim) override;
   bool reads_pair_rows(int body) const override { return rows_[body] != 0; }
 

@@ -199,11 +199,15 @@ void TotalLagrangian<D>::map_slots(Simulation<D>& sim) {
 
 template <int D>
 void TotalLagrangian<D>::on_rebuild(Simulation<D>& sim) {
-  const bool first = !built_;
-  if (first) build(sim);  // first build, fresh or restarted (from X0 and V0)
+  if (!built_) build(sim);  // first build, fresh or restarted (from X0 and V0)
   map_slots(sim);
-  if (!first) return;
-  auto x = sim.particles().x();  // F at the restart's positions, for the first rates
+}
+
+template <int D>
+void TotalLagrangian<D>::restarted(Simulation<D>& sim) {
+  // F at the restart's positions (G15 Eq. 17), for the first rates: the checkpoint's, not those
+  // of the rebuild the restart restores (a fresh start computes F in its first sums).
+  auto x = sim.particles().x();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < sid_.size(); ++s) F_[s] = reference_gradient(s, x, true);
 }
@@ -218,7 +222,7 @@ void TotalLagrangian<D>::rates(Simulation<D>& sim) {
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < ns; ++s) {
     const int i = idx_[s];
-    // F of the last sums (G15 Eq. 17): the positions have not moved since (on_rebuild after a
+    // F of the last sums (G15 Eq. 17): the positions have not moved since (restarted() after a
     // restart), and the same loop gives the same bits.
     const Mat<D> Fd = reference_gradient(s, v, false);  // its rate
     L[i] = Fd * F_[s].inverse();                        // velocity gradient dv/dx = Fdot F^-1

@@ -35,6 +35,7 @@ class TotalLagrangian {
   bool is_tl(std::int64_t body) const { return tlb_[body] != 0; }
   void on_create(Simulation<D>& sim);  // reference volumes V0 = m / rho
   void on_rebuild(Simulation<D>& sim);
+  void restarted(Simulation<D>& sim);  // F at the checkpoint's positions
   // L = Fdot F^-1 at the half-step velocities, with the F of the last sums (the positions have
   // not moved since: the drift follows the rates).
   void rates(Simulation<D>& sim);
