@@ -21,10 +21,15 @@ inline Result mpirun(int ranks, const std::string& args) {
 }
 
 // The neighbour-list history (Simulation::save_state, restart.cpp): when a run last rebuilt its
-// lists and how often. Ranks rebuild before every checkpoint, one rank does not: it differs.
+// lists and how often, and the Eulerian solids' split F = F_ref F_init with the reference
+// positions of that rebuild (MMB Eq. 30; F itself is compared). Ranks rebuild before every
+// checkpoint, one rank does not: these differ.
 inline bool rebuild_history(const std::string& name) {
-  return name == "build_position" || name == "build_density" || name == "sim.builds" ||
-         name == "sim.rebuild_requested" || name.rfind("sim.pending_removal.", 0) == 0;
+  for (const char* h :
+       {"build_position", "build_density", "reference_position", "incremental_deformation",
+        "reference_deformation", "sim.builds", "sim.rebuild_requested"})
+    if (name == h) return true;
+  return name.rfind("sim.pending_removal.", 0) == 0;
 }
 
 // Every field of every particle (matched by id) within tol x the field's largest |value| (over
