@@ -27,6 +27,7 @@ void Simulation<D>::init(bool restarted) {
       rebuild_requested_ = true;
       update_neighbours();
     }
+    if (restore_) nb_.set_builds(builds_before_);  // the re-sorting period counts on
     flag_pending_removals();
     for (auto& m : modules_) m->restarted(*this);
     update_pair_cache(PairRows::read);
@@ -76,7 +77,6 @@ void Simulation<D>::restore_build_state() {
   update_neighbours();
   restoring_ = false;
   exchange_state();
-  nb_.set_builds(builds_before_);
 }
 
 template <int D>
