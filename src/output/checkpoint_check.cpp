@@ -108,21 +108,24 @@ std::string check_bodies(const std::vector<Field>& fields, const Scene& scene) {
 // Every position within the domain on its non-periodic axes, give or take what a particle may
 // move between two neighbour rebuilds (which catch one that leaves): a kernel support and the
 // skin. A position beyond could not come from a run; it would stop the restart at its first step.
+// The same for the positions of the last rebuild, from which a restart makes its lists.
 std::string check_positions(const std::vector<Field>& fields, const Scene& scene) {
-  const Field* x = find(fields, "position");
-  if (!x || x->type != FieldType::Real) return "";
   const int dim = scene.dimension;
   const double slack = (3 + scene.skin_factor) * scene.h();
-  for (std::size_t i = 0; i * dim < x->real.size(); ++i)
-    for (int a = 0; a < dim; ++a) {
-      const double v = x->real[i * dim + a];
-      const double lo = scene.domain_min[a], hi = scene.domain_max[a];
-      if (!scene.periodic[a] && (v < lo - slack || v > hi + slack))
-        return fmt::format(
-            "field 'position', {}: {} = {:g} lies outside the domain [{:g}, {:g}] by more than a "
-            "run lets a particle move (the checkpoint is damaged)",
-            particle(fields, i), "xyz"[a], v, lo, hi);
-    }
+  for (const char* name : {"position", "build_position"}) {
+    const Field* x = find(fields, name);
+    if (!x || x->type != FieldType::Real) continue;
+    for (std::size_t i = 0; i * dim < x->real.size(); ++i)
+      for (int a = 0; a < dim; ++a) {
+        const double v = x->real[i * dim + a];
+        const double lo = scene.domain_min[a], hi = scene.domain_max[a];
+        if (!scene.periodic[a] && (v < lo - slack || v > hi + slack))
+          return fmt::format(
+              "field '{}', {}: {} = {:g} lies outside the domain [{:g}, {:g}] by more than a run "
+              "lets a particle move (the checkpoint is damaged)",
+              name, particle(fields, i), "xyz"[a], v, lo, hi);
+      }
+  }
   return "";
 }
 
