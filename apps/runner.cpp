@@ -266,7 +266,7 @@ RunResult run_impl(Scene scene, const RunOptions& opt, const CheckpointMeta* res
   } catch (const RunAborted& e) {
     start_abort = e.what();
   }
-  if (start_abort.empty()) check_checkpoint_interval(scene, sim.dt());
+  if (start_abort.empty()) check_checkpoint_interval(scene, sim.first_dt());
   auto& p = sim.particles();
   check_output_fields(p, scene);
   Probes<D> probes(sim);

@@ -189,6 +189,7 @@ class Simulation {
   const std::vector<std::unique_ptr<Module<D>>>& modules() const { return modules_; }
   double time() const { return t_; }
   double dt() const { return dt_; }
+  double first_dt() const { return dt0_; }  // of the run's start (a restart: from its checkpoint)
   long step() const { return step_; }
   double dp() const { return scene_.dp; }
   const V& body_force() const { return g_; }
