@@ -1,6 +1,5 @@
 // The scene section `surfaces` (rigid surfaces, MMB Sect. 3).
 #include <cmath>
-#include <fstream>
 
 #include "core/input_file.hpp"
 #include "scene/scene_parts.hpp"

@@ -24,10 +24,10 @@ class AliasCheck : public YAML::EventHandler {
   explicit AliasCheck(std::string origin) : origin_(std::move(origin)) {}
   void OnDocumentStart(const YAML::Mark&) override {}
   void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& m, YAML::anchor_t a) override { node(m, a, 1); }
-  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t a,
+  void OnNull(const YAML::Mark&, YAML::anchor_t a) override { leaf(a); }
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t a,
                 const std::string&) override {
-    node(m, a, 1);
+    leaf(a);
   }
   void OnAlias(const YAML::Mark& m, YAML::anchor_t a) override {
     for (const auto& f : open_)
@@ -58,9 +58,9 @@ class AliasCheck : public YAML::EventHandler {
     int line;
     double nodes;  // with the blocks its aliases name
   };
-  void node(const YAML::Mark&, YAML::anchor_t a, double n) {
-    if (a) size_[a] = n;
-    count(n);
+  void leaf(YAML::anchor_t a) {
+    if (a) size_[a] = 1;
+    count(1);
   }
   void count(double n) {
     if (!open_.empty()) open_.back().nodes += n;

@@ -39,6 +39,18 @@ void expect_interrupted_state(const std::string& dir, int sig, int code) {
             fmt::format("{:.17g},{},", meta.time, steps));
 }
 
+// Restarts the run in `dir` from its `file` (checkpoint.h5 or final.h5) to the end: final.h5 and
+// probes.csv equal those of the uninterrupted run in `full`, bit for bit.
+void expect_restart_equals_full_run(const std::string& full, const std::string& dir,
+                                    const std::string& file) {
+  auto b =
+      run_monosph("run --restart " + dir + "/" + file + " --out " + dir + " --threads 1 --quiet");
+  ASSERT_EQ(b.code, 0) << b.output;
+  EXPECT_EQ(summary(dir)["status"], "completed");
+  expect_same_checkpoint(full + "/final.h5", dir + "/final.h5");
+  expect_same_file(full + "/probes.csv", dir + "/probes.csv");
+}
+
 TEST(Interrupts, RestartAfterSigintSigtermSigusr1SigkillEqualsUninterruptedRun) {
   const std::string full = out_dir("interrupt_full");
   auto r = run_monosph("run " + kScene + " --out " + full + kOpts);
@@ -55,12 +67,7 @@ TEST(Interrupts, RestartAfterSigintSigtermSigusr1SigkillEqualsUninterruptedRun) 
     } else {
       expect_interrupted_state(dir, sig, code);
     }
-    auto b = run_monosph("run --restart " + dir + "/checkpoint.h5 --out " + dir +
-                         " --threads 1 --quiet");
-    ASSERT_EQ(b.code, 0) << b.output;
-    EXPECT_EQ(summary(dir)["status"], "completed");
-    expect_same_checkpoint(full + "/final.h5", dir + "/final.h5");
-    expect_same_file(full + "/probes.csv", dir + "/probes.csv");
+    expect_restart_equals_full_run(full, dir, "checkpoint.h5");
   }
 }
 
@@ -80,11 +87,7 @@ void expect_restart_after_steps_equals_full_run(const std::string& name, const s
     auto a = run_monosph(args + " --out " + dir + " --steps " + std::to_string(n));
     ASSERT_EQ(a.code, 0) << a.output;
     ASSERT_EQ(summary(dir)["steps"], n);
-    auto b =
-        run_monosph("run --restart " + dir + "/final.h5 --out " + dir + " --threads 1 --quiet");
-    ASSERT_EQ(b.code, 0) << b.output;
-    expect_same_checkpoint(full + "/final.h5", dir + "/final.h5");
-    expect_same_file(full + "/probes.csv", dir + "/probes.csv");
+    expect_restart_equals_full_run(full, dir, "final.h5");
   }
 }
 
@@ -127,11 +130,7 @@ TEST(Interrupts, RestartAfterSigintEqualsUninterruptedRunWithASolid) {
       interrupt_run(std::string(MONOSPH_BIN) + " run " + scene + " --out " + dir + opts, dir,
                     [&](Child& c) { kill(c.pid, SIGINT); });
   ASSERT_EQ(code, 128 + SIGINT) << file_text(log_of(dir));
-  auto b =
-      run_monosph("run --restart " + dir + "/checkpoint.h5 --out " + dir + " --threads 1 --quiet");
-  ASSERT_EQ(b.code, 0) << b.output;
-  expect_same_checkpoint(full + "/final.h5", dir + "/final.h5");
-  expect_same_file(full + "/probes.csv", dir + "/probes.csv");
+  expect_restart_equals_full_run(full, dir, "checkpoint.h5");
 }
 
 TEST(Interrupts, RestartOfADualCriteriaRunFromAPeriodicCheckpointEqualsUninterruptedRun) {
