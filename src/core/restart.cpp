@@ -3,10 +3,12 @@
 // the positions and densities of the last neighbour rebuild (fields build_position and
 // build_density), the number of rebuilds so far (the re-sorting period counts them), the
 // initial time step (the collapse guard's reference), the particles flagged for removal at the
-// next rebuild and the time of the next configuration update of dual-criteria stepping.
+// next rebuild, the time of the next configuration update of dual-criteria stepping, and what
+// removed particles took along (mass, energies: removed()).
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 
 #include "core/simulation.hpp"
 
@@ -92,7 +94,51 @@ void Simulation<D>::flag_pending_removals() {
 }
 
 template <int D>
+void Simulation<D>::account_removed(const std::vector<char>& flag) {
+  // Mass, kinetic energy and the carried energies of the particles leaving (summed over ranks).
+  auto bd = p_.body();
+  auto m = p_.m();
+  auto v = p_.v();
+  const std::size_t nb = removed_mass_.size();
+  std::vector<std::pair<std::string, int>> fields{{"mass", -1}, {"kinetic_energy", -1}};
+  for (const char* name : kCarried)
+    if (p_.find(name) >= 0) fields.emplace_back(name, p_.find(name));
+  std::vector<double> sum(fields.size() * nb, 0.0);
+  for (std::size_t i = 0; i < flag.size() && i < p_.size(); ++i) {
+    if (!flag[i]) continue;
+    sum[bd[i]] += m[i];
+    sum[nb + bd[i]] += 0.5 * m[i] * v[i].squaredNorm();
+    for (std::size_t f = 2; f < fields.size(); ++f)
+      sum[f * nb + bd[i]] += p_.field(fields[f].second).real[i];
+  }
+  comm_.sum(sum);
+  for (std::size_t b = 0; b < nb; ++b) removed_mass_[b] += sum[b];
+  for (std::size_t f = 1; f < fields.size(); ++f) {
+    auto& r = removed_[fields[f].first];
+    r.resize(nb, 0.0);
+    for (std::size_t b = 0; b < nb; ++b) r[b] += sum[f * nb + b];
+  }
+}
+
+template <int D>
+double Simulation<D>::removed(const std::string& name, int body) const {
+  const auto it = removed_.find(name);
+  if (name != "mass" && it == removed_.end()) return 0.0;
+  const std::vector<double>& r = name == "mass" ? removed_mass_ : it->second;
+  double sum = 0;
+  for (std::size_t b = 0; b < r.size(); ++b)
+    if (body < 0 || int(b) == body) sum += r[b];
+  return sum;
+}
+
+template <int D>
 void Simulation<D>::save_state(std::map<std::string, double>& s) const {
+  // What removed particles took along (removed()): sums over all ranks, the same on each.
+  for (std::size_t b = 0; b < removed_mass_.size(); ++b)
+    if (removed_mass_[b] != 0) s[fmt::format("sim.removed.mass.{}", b)] = removed_mass_[b];
+  for (const auto& [name, r] : removed_)
+    for (std::size_t b = 0; b < r.size(); ++b)
+      if (r[b] != 0) s[fmt::format("sim.removed.{}.{}", name, b)] = r[b];
   s["sim.builds"] = nb_.builds();
   s["sim.dt0"] = dt0_;
   if (scene_.advection_cfl > 0) s["sim.t_configuration"] = t_configuration_;
@@ -108,6 +154,20 @@ void Simulation<D>::load_state(const std::map<std::string, double>& s) {
   // A checkpoint of an earlier version has no build state: the restart rebuilds at its
   // positions (bit-identical only if it was written right after a rebuild).
   if (auto c = s.find("sim.t_configuration"); c != s.end()) t_configuration_ = c->second;
+  for (auto r = s.lower_bound("sim.removed."); r != s.end(); ++r) {
+    if (r->first.rfind("sim.removed.", 0) != 0) break;
+    const std::string key = r->first.substr(12);  // name.body
+    const auto dot = key.rfind('.');
+    std::size_t b = 0;
+    const char* end = key.data() + key.size();
+    if (dot == std::string::npos || std::from_chars(key.data() + dot + 1, end, b).ptr != end ||
+        b >= removed_mass_.size())
+      continue;  // not this version's key
+    const std::string name = key.substr(0, dot);
+    auto& v = name == "mass" ? removed_mass_ : removed_[name];
+    v.resize(removed_mass_.size(), 0.0);
+    v[b] = r->second;
+  }
   auto it = s.find("sim.builds");
   restore_ = it != s.end();
   if (!restore_) return;
@@ -129,6 +189,10 @@ template void Simulation<2>::restore_build_state();
 template void Simulation<3>::restore_build_state();
 template void Simulation<2>::flag_pending_removals();
 template void Simulation<3>::flag_pending_removals();
+template void Simulation<2>::account_removed(const std::vector<char>&);
+template void Simulation<3>::account_removed(const std::vector<char>&);
+template double Simulation<2>::removed(const std::string&, int) const;
+template double Simulation<3>::removed(const std::string&, int) const;
 template void Simulation<2>::save_state(std::map<std::string, double>&) const;
 template void Simulation<3>::save_state(std::map<std::string, double>&) const;
 template void Simulation<2>::load_state(const std::map<std::string, double>&);

@@ -137,13 +137,7 @@ bool Simulation<D>::update_neighbours() {
   }
   if (!remove_flag_.empty() || dec_) {  // with MPI every rank joins the mass reduction
     const auto& flag = remove_flag_;
-    auto bd = p_.body();
-    auto mass = p_.m();
-    std::vector<double> dm(removed_mass_.size(), 0.0);
-    for (std::size_t i = 0; i < flag.size() && i < p_.size(); ++i)
-      if (flag[i]) dm[bd[i]] += mass[i];
-    comm_.sum(dm);
-    for (std::size_t b = 0; b < dm.size(); ++b) removed_mass_[b] += dm[b];
+    account_removed(flag);
     if (!remove_flag_.empty()) {
       if (dec_) std::erase_if(work, [&, i = std::size_t(0)](float) mutable { return flag[i++]; });
       p_.remove(remove_flag_);

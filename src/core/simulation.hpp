@@ -212,10 +212,13 @@ class Simulation {
   const std::vector<V>& reactions() const { return reactions_; }
   const std::vector<BoundarySpec>& boundaries() const { return scene_.boundaries; }
   // Removes the flagged particles at the next neighbour rebuild (forced; modules' before_rebuild
-  // still sees them). Their mass is added to removed_mass() of their body.
+  // still sees them). Their mass is added to removed_mass() of their body, and what they carry
+  // to removed(): "kinetic_energy" and the per-particle energy fields of kCarried.
   void remove_particles(const std::vector<char>& flag);
   const std::vector<double>& removed_mass() const { return removed_mass_; }
-  void set_removed_mass(std::vector<double> m) { removed_mass_ = std::move(m); }
+  static constexpr const char* kCarried[] = {"failure_energy", "hourglass_energy", "plastic_work"};
+  // Sum over the removed particles of a body (all bodies if body < 0); 0 for an unknown name.
+  double removed(const std::string& name, int body = -1) const;
   // Seconds spent in each pass of the steps so far: integration (kicks, drift), rates,
   // neighbours (rebuilds, MPI migration), pair_cache, sums, constitutive, forces, guards_and_dt.
   const std::map<std::string, double>& pass_seconds() const { return pass_seconds_; }
@@ -302,8 +305,10 @@ class Simulation {
   std::vector<std::vector<Expression>> bc_velocity_;
   std::vector<V> reactions_;
   int kaprev_ = -1;  // field a_n for the Newmark gamma correction (only when gamma != 0.5)
-  std::vector<char> remove_flag_;     // pending removal (remove_particles)
-  std::vector<double> removed_mass_;  // per body
+  std::vector<char> remove_flag_;                       // pending removal (remove_particles)
+  std::vector<double> removed_mass_;                    // per body
+  std::map<std::string, std::vector<double>> removed_;  // per quantity, per body (removed())
+  void account_removed(const std::vector<char>& flag);
   int kbc_ = -1;  // field "boundary" (1 + index of the boundary condition, 0 = free)
   V g_;
   std::vector<V> gb_;            // per body

@@ -360,15 +360,29 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
     };
     if (s.type == "total_energy") {
       // kinetic + elastic and hourglass-spring energy (solids) + potential of each body's constant
-      // body force, -m g.x; + the energy of the contacts when it is the whole scene's
+      // body force, -m g.x; + the energy of the contacts when it is the whole scene's; + the
+      // elastic energy failed particles released (failure_energy); + what eroded particles took
       const int kh = p.find("hourglass_energy");
+      const int kf = p.find("failure_energy");
       double e = it->body < 0 ? contact_energy() : 0.0;
+      // Eroded particles: their kinetic, released and spring energy (summed over the ranks).
+      double gone = 0;
+      for (const char* q : {"kinetic_energy", "failure_energy", "hourglass_energy"})
+        gone += sim.removed(q, it->body);
       for (std::size_t i = 0; i < n; ++i) {
         if (!in_body(i)) continue;
         e += 0.5 * m[i] * v[i].squaredNorm() - m[i] * sim.body_force(bd[i]).dot(x[i]) + elastic(i);
         if (kh >= 0) e += p.template view<double>(kh)[i];  // hourglass springs (solid module)
+        if (kf >= 0) e += p.template view<double>(kf)[i];  // released at failure (solid module)
       }
-      out.push_back(comm.sum(e));
+      out.push_back(comm.sum(e) + gone);
+    } else if (s.type == "failure_energy" || s.type == "plastic_work") {
+      // Per-particle energies of the solid module, eroded particles' included.
+      const int kf = p.find(s.type);
+      double e = 0;
+      for (std::size_t i = 0; i < n && kf >= 0; ++i)
+        if (in_body(i)) e += p.template view<double>(kf)[i];
+      out.push_back(comm.sum(e) + sim.removed(s.type, it->body));
     } else if (s.type == "contact_energy") {
       out.push_back(comm.sum(contact_energy()));
     } else if (s.type == "kinetic_energy") {
@@ -445,11 +459,7 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
     } else if (s.type == "wall_pressure") {  // mean interpolated pressure over the sensor
       out.push_back(it->wall->sample(sim));
     } else if (s.type == "removed_mass") {  // eroded particles (all bodies, or `body`)
-      double sum = 0;
-      const auto& rm = sim.removed_mass();
-      for (std::size_t b = 0; b < rm.size(); ++b)
-        if (it->body < 0 || static_cast<int>(b) == it->body) sum += rm[b];
-      out.push_back(sum);
+      out.push_back(sim.removed("mass", it->body));
     } else if (s.type == "reaction_force") {
       for (int a = 0; a < D; ++a) out.push_back(sim.reactions()[it->bc][a]);
     } else if (s.type == "penetration") {

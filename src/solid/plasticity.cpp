@@ -87,8 +87,19 @@ double jc_failure_strain(const JohnsonCookDamage& d, const JohnsonCook& jc, doub
   return std::max(a * b * c, d.min_failure_strain);
 }
 
+void add_damage(Mat3& S, PlasticPoint& pt, const Material& m, double rho, double dD) {
+  if (pt.D >= 1 || dD <= 0) return;
+  pt.D = std::min(1.0, pt.D + dD);
+  if (pt.D < 1) return;
+  const double p = m.pressure(rho);
+  pt.released = (m.shear_modulus > 0 ? S.cwiseProduct(S).sum() / (4 * m.shear_modulus) : 0.0) +
+                (p < 0 ? p * p / (2 * m.bulk_modulus) : 0.0);
+  S.setZero();
+}
+
 bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, const SolidMaterial& sm,
-                    double rho, double dt) {
+                    double rho, double dt, bool defer_damage) {
+  pt.dD = pt.released = 0;
   if (sm.damage.on && pt.D >= 1) {  // failed for good: no deviatoric stress (MMB Sect. 2.3)
     S.setZero();
     pt.rate = 0;
@@ -105,8 +116,8 @@ bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, const SolidMat
     // MMB Eq. 25-26 with the triaxiality sigma* = -p / sigma_eq.
     const double ef =
         jc_failure_strain(sm.damage, sm.plasticity, -m.pressure(rho) / r.sigma_y, pt.rate, pt.T);
-    pt.D = std::min(1.0, pt.D + r.deps / ef);
-    if (pt.D >= 1) S.setZero();
+    pt.dD = r.deps / ef;
+    if (!defer_damage) add_damage(S, pt, m, rho, pt.dD);
   }
   return true;
 }

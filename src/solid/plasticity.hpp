@@ -37,17 +37,24 @@ double jc_failure_strain(const JohnsonCookDamage& d, const JohnsonCook& jc, doub
 
 // State of one material point carried between steps.
 struct PlasticPoint {
-  double eps_p = 0;    // equivalent plastic strain
-  double rate = 0;     // its rate over the last step
-  double T = 293.15;   // temperature (K)
-  double D = 0;        // Johnson-Cook damage, failed at 1
-  double sigma_y = 0;  // yield stress at the last return
+  double eps_p = 0;     // equivalent plastic strain
+  double rate = 0;      // its rate over the last step
+  double T = 293.15;    // temperature (K)
+  double D = 0;         // Johnson-Cook damage, failed at 1
+  double sigma_y = 0;   // yield stress at the last return
+  double dD = 0;        // this step's local damage increment (MMB Eq. 25)
+  double released = 0;  // elastic energy per unit volume released when the point failed this step
 };
 
 // One step after the elastic predictor S (trial deviator): return mapping (Eq. 22-23), adiabatic
 // heating (Eq. 24), damage growth (Eq. 25-26) with the pressure p = K (rho/rho0 - 1) (Eq. 13).
 // A failed point (D >= 1) keeps S = 0 for good. Returns true if the step was plastic.
+// With `defer_damage` (non-local damage) D is left alone: the caller adds an average of dD.
 bool plastic_update(Mat3& S, PlasticPoint& pt, const Material& m, const SolidMaterial& sm,
-                    double rho, double dt);
+                    double rho, double dt, bool defer_damage = false);
+
+// Adds dD to the damage of a point; at D = 1 the point fails: S = 0, and `released` holds the
+// elastic energy per unit volume it had (S:S/(4 mu) + a tensile p^2/(2 K)).
+void add_damage(Mat3& S, PlasticPoint& pt, const Material& m, double rho, double dD);
 
 }  // namespace monosph

@@ -44,7 +44,8 @@ nlohmann::json SolidMaterial::dump() const {
             {"d3", d.d3},
             {"d4", d.d4},
             {"d5", d.d5},
-            {"min_failure_strain", d.min_failure_strain}}},
+            {"min_failure_strain", d.min_failure_strain},
+            {"nonlocal_length", d.nonlocal_length}}},
           {"taylor_quinney", taylor_quinney},
           {"neo_hookean", neo_hookean}};
 }
@@ -95,6 +96,8 @@ void read_damage(MapReader& r, JohnsonCookDamage& d) {
   d.d4 = q.number("D4", d.d4);
   d.d5 = q.number("D5", d.d5);
   d.min_failure_strain = q.positive("min_failure_strain", d.min_failure_strain);
+  // Opt-in regularisation with a physical length (docs/theory.md, "Non-local damage").
+  if (q.has("nonlocal_length")) d.nonlocal_length = q.positive("nonlocal_length");
   q.finish();
 }
 

@@ -20,6 +20,9 @@ struct JohnsonCookDamage {
   double d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;
   double min_failure_strain = 1e-6;  // floor of eps_f (as LS-DYNA's EFMIN): D1 < 0 fits give
                                      // eps_f <= 0 at high triaxiality
+  // Non-local damage (solid/nonlocal_damage.hpp): the length l [m] over which damage increments
+  // are averaged; 0 = local (MMB).
+  double nonlocal_length = 0;
 };
 
 struct SolidMaterial : ModuleParams {

@@ -56,11 +56,27 @@ SolidModule<D>::SolidModule(Simulation<D>& sim) {
     kepr_ = p.add_field("plastic_strain_rate", 1, FieldType::Real, true);
     kT_ = p.add_field("temperature", 1, FieldType::Real, true);
     ksy_ = p.add_field("yield_stress", 1, FieldType::Real, true);
+    kwp_ = p.add_field("plastic_work", 1, FieldType::Real, true);  // sigma_y deps V, summed
   }
-  if (any_damage_) kdmg_ = p.add_field("damage", 1, FieldType::Real, true);
+  if (any_damage_) {
+    kdmg_ = p.add_field("damage", 1, FieldType::Real, true);
+    kfail_ = p.add_field("failure_energy", 1, FieldType::Real, true);
+  }
+  for (const auto& m : sim.materials()) {
+    const double l = mat_[&m - sim.materials().data()].damage.nonlocal_length;
+    if (l <= 0) continue;
+    const std::string key = "materials." + m.name + ".damage.nonlocal_length";
+    if (l <= sim.dp())
+      throw InputError(key +
+                       ": must exceed the particle spacing dp (an average over one particle "
+                       "is the local damage)");
+    if (sim.comm().size() > 1) throw InputError(key + ": non-local damage runs on one rank");
+    any_nonlocal_ = true;
+  }
   if (any_as_) kas_ = p.add_field("artificial_stress", D * D);
   // Frames: NaN off solid particles; deformation gradients pad to F_zz = 1 in 2D (plane strain).
-  p.set_meaning({kS_, kvm_, kX0_, kXref_, kdis_, khge_, klap_, kep_, kepr_, kT_, ksy_, kdmg_, kas_},
+  p.set_meaning({kS_, kvm_, kX0_, kXref_, kdis_, khge_, klap_, kep_, kepr_, kT_, ksy_, kwp_, kdmg_,
+                 kfail_, kas_},
                 phase_bit(kSolid));
   p.set_meaning({kF_, kFref_, kFinit_, kFls_}, phase_bit(kSolid), 1.0);
   bool any_tl = false;
@@ -175,20 +191,57 @@ void SolidModule<D>::plastic_return(Simulation<D>& sim, double dt) {
   auto epr = p.template view<double>(kepr_);
   auto T = p.template view<double>(kT_);
   auto sy = p.template view<double>(ksy_);
-  std::span<double> dmg;
-  if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_);
+  auto wp = p.template view<double>(kwp_);
+  std::span<double> dmg, fail;
+  if (kdmg_ >= 0) dmg = p.template view<double>(kdmg_), fail = p.template view<double>(kfail_);
+  auto m = p.m();
   const auto& mats = sim.materials();
   const std::size_t n = p.size();
-  // Dynamic chunks: the yielding particles (a Newton solve each) gather in one region, e.g. the
-  // impact end of a Taylor bar, which equal halves would give to one thread.
+  if (any_nonlocal_) dmg_inc_.assign(n, 0.0);
+    // Dynamic chunks: the yielding particles (a Newton solve each) gather in one region, e.g. the
+    // impact end of a Taylor bar, which equal halves would give to one thread.
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(ph[i])) continue;
     if (!mat_[mt[i]].plasticity.on) continue;
     PlasticPoint pt{ep[i], epr[i], T[i], kdmg_ >= 0 ? dmg[i] : 0.0, sy[i]};
-    plastic_update(S[i], pt, mats[mt[i]], mat_[mt[i]], rho[i], dt);
+    const bool nonlocal = mat_[mt[i]].damage.nonlocal_length > 0;
+    plastic_update(S[i], pt, mats[mt[i]], mat_[mt[i]], rho[i], dt, nonlocal);
+    wp[i] += pt.sigma_y * (pt.eps_p - ep[i]) * m[i] / rho[i];  // MMB Eq. 24's plastic work
     ep[i] = pt.eps_p, epr[i] = pt.rate, T[i] = pt.T, sy[i] = pt.sigma_y;
-    if (kdmg_ >= 0) dmg[i] = pt.D;
+    if (kdmg_ < 0) continue;
+    dmg[i] = pt.D;
+    fail[i] += pt.released * m[i] / rho[i];
+    if (nonlocal) dmg_inc_[i] = pt.dD;
+  }
+  if (any_nonlocal_) nonlocal_damage(sim);
+}
+
+template <int D>
+void SolidModule<D>::nonlocal_damage(Simulation<D>& sim) {
+  // The increments of this step's returns, averaged over l (nonlocal_damage.hpp), grow D.
+  auto& p = sim.particles();
+  auto ph = p.phase();
+  auto mt = p.material();
+  auto rho = p.rho();
+  auto m = p.m();
+  auto S = p.template view<Mat3>(kS_);
+  auto dmg = p.template view<double>(kdmg_);
+  auto fail = p.template view<double>(kfail_);
+  const std::size_t n = sim.owned();
+  dmg_len_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (is_solid(ph[i])) dmg_len_[i] = mat_[mt[i]].damage.nonlocal_length;
+  nonlocal_.average(sim, dmg_len_, dmg_inc_, dmg_avg_);
+  const auto& mats = sim.materials();
+#pragma omp parallel for schedule(runtime)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (dmg_avg_[i] <= 0) continue;
+    PlasticPoint pt;
+    pt.D = dmg[i];
+    add_damage(S[i], pt, mats[mt[i]], rho[i], dmg_avg_[i]);
+    dmg[i] = pt.D;
+    fail[i] += pt.released * m[i] / rho[i];
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/simulation.hpp"
+#include "solid/nonlocal_damage.hpp"
 #include "solid/solid_keys.hpp"
 #include "solid/solid_material.hpp"
 #include "total_lagrangian.hpp"
@@ -80,8 +81,15 @@ class SolidModule : public Module<D> {
   // Non-hourglass formulation (Zhang et al. 2024): time integral of the Laplacian of v.
   void laplacian_rate(Simulation<D>& sim);  // dI/dt into lap_rate_ (rates: before the drift)
   int klap_ = -1;
-  int kep_ = -1, kepr_ = -1, kT_ = -1, kdmg_ = -1, ksy_ = -1;
+  int kep_ = -1, kepr_ = -1, kT_ = -1, kdmg_ = -1, ksy_ = -1, kwp_ = -1;
   bool any_plastic_ = false, any_damage_ = false, any_erosion_ = false;
+  int kfail_ = -1;  // elastic energy each particle released when it failed (total_energy)
+  // Non-local damage (nonlocal_damage.hpp): per particle its length l, the local increment of
+  // the step and the average that grows D.
+  void nonlocal_damage(Simulation<D>& sim);
+  bool any_nonlocal_ = false;
+  NonlocalAverage<D> nonlocal_;
+  std::vector<double> dmg_len_, dmg_inc_, dmg_avg_;
   std::vector<char> erode_flag_;  // particles to erode this step (kept: no allocation per step)
 
   int kS_, kvm_, kX0_, kXref_, kF_, kFref_, kFinit_, kdis_, kgradv_, kas_ = -1, kFls_ = -1,

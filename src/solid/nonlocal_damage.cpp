@@ -1,0 +1,104 @@
+#include "solid/nonlocal_damage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace monosph {
+
+template <int D>
+void NonlocalAverage<D>::bin(Simulation<D>& sim, std::span<const double> length, double cell) {
+  const auto& dom = sim.neighbours().domain();
+  const auto x = sim.particles().x();
+  const std::size_t n = sim.owned();
+  lo_ = dom.lo;
+  std::size_t total = 1;
+  for (int a = 0; a < D; ++a) {
+    nc_[a] = std::max(1, int(std::floor(dom.length()[a] / cell)));  // cells at least l wide
+    size_[a] = dom.length()[a] / nc_[a];
+    total *= std::size_t(nc_[a]);
+  }
+  start_.assign(total + 1, 0);
+  cell_of_.assign(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (length[i] <= 0) continue;
+    int c = 0;
+    for (int a = D - 1; a >= 0; --a) {
+      const int k = std::clamp(int(std::floor((x[i][a] - lo_[a]) / size_[a])), 0, nc_[a] - 1);
+      c = c * nc_[a] + k;
+    }
+    cell_of_[i] = c;
+    ++start_[c + 1];
+  }
+  for (std::size_t c = 0; c < total; ++c) start_[c + 1] += start_[c];
+  items_.resize(start_[total]);
+  std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    if (cell_of_[i] >= 0) items_[fill[cell_of_[i]]++] = int(i);
+}
+
+template <int D>
+void NonlocalAverage<D>::average(Simulation<D>& sim, std::span<const double> length,
+                                 std::span<const double> inc, std::vector<double>& out) {
+  const std::size_t n = sim.owned();
+  out.assign(n, 0.0);
+  double lmax = 0;
+  for (std::size_t i = 0; i < n; ++i) lmax = std::max(lmax, length[i]);
+  if (lmax <= 0) return;
+  bin(sim, length, lmax);
+  active_.assign(start_.size() - 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (cell_of_[i] >= 0 && inc[i] > 0) active_[cell_of_[i]] = 1;
+  auto& p = sim.particles();
+  const auto x = p.x();
+  const auto bd = p.body();
+  const auto m = p.m();
+  const auto rho = p.rho();
+  const auto& dom = sim.neighbours().domain();
+  const Vec<D> len = dom.length();
+  constexpr int kNear = D == 2 ? 9 : 27;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (cell_of_[i] < 0) continue;
+    // The cells around i's (wrapped along periodic axes, each once).
+    std::array<int, kNear> near;
+    int count = 0;
+    bool any = false;
+    std::array<int, D> ci;
+    for (int a = 0, c = cell_of_[i]; a < D; ++a) ci[a] = c % nc_[a], c /= nc_[a];
+    for (int o = 0; o < kNear; ++o) {
+      int c = 0;
+      bool inside = true;
+      for (int a = D - 1, r = o; a >= 0; --a) {
+        const int off = (a == 0 ? r : r / (a == 1 ? 3 : 9)) % 3 - 1;
+        int k = ci[a] + off;
+        if (dom.periodic[a]) k = (k + nc_[a]) % nc_[a];
+        inside = inside && k >= 0 && k < nc_[a];
+        c = c * nc_[a] + k;
+      }
+      if (!inside || std::find(near.begin(), near.begin() + count, c) != near.begin() + count)
+        continue;
+      near[count++] = c;
+      any = any || active_[c];
+    }
+    if (!any) continue;
+    const double l2 = length[i] * length[i];
+    double num = 0, den = 0;
+    for (int q = 0; q < count; ++q)
+      for (std::size_t k = start_[near[q]]; k < start_[near[q] + 1]; ++k) {
+        const int j = items_[k];
+        if (bd[j] != bd[i]) continue;
+        Vec<D> d = x[j] - x[i];
+        for (int a = 0; a < D; ++a)
+          if (dom.periodic[a]) d[a] -= len[a] * std::rint(d[a] / len[a]);
+        const double w = bell_weight(d.squaredNorm(), l2) * m[j] / rho[j];
+        num += w * inc[j];
+        den += w;
+      }
+    out[i] = den > 0 ? num / den : 0.0;
+  }
+}
+
+template class NonlocalAverage<2>;
+template class NonlocalAverage<3>;
+
+}  // namespace monosph
