@@ -178,6 +178,37 @@ void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim
     scene_error(p + ".fill", "shells needs a sphere (circle in 2D) or ring shape");
 }
 
+// `rotate: {degrees, about, axis}`: the particles turned after the fill; `about` defaults to the
+// centre of the shape's bounding box, `axis` (3D only) to z.
+void read_rotate(MapReader& b, BodySpec& body, int dim) {
+  if (!b.has("rotate")) return void(b.optional("rotate"));
+  MapReader r(b.node("rotate"), b.at("rotate"), b.constants());
+  BodyRotation rot;
+  rot.degrees = r.number("degrees");
+  if (r.has("about")) {
+    rot.about = r.vector("about", dim);
+  } else {
+    r.optional("about");
+    Point lo, hi;
+    body.shape.bounds(lo, hi);
+    for (int a = 0; a < dim; ++a) rot.about.push_back(0.5 * (lo[a] + hi[a]));
+  }
+  if (dim == 2 && r.has("axis"))
+    scene_error(r.at("axis"), "applies to 3D scenes only (a 2D body turns about the point)");
+  if (dim == 3 && r.has("axis")) {
+    rot.axis = r.vector("axis", 3);
+    const double a2 =
+        rot.axis[0] * rot.axis[0] + rot.axis[1] * rot.axis[1] + rot.axis[2] * rot.axis[2];
+    if (!(a2 > 0) || !std::isfinite(a2))
+      scene_error(r.at("axis"), "must be a finite non-zero vector");
+    for (double& c : rot.axis) c /= std::sqrt(a2);
+  } else {
+    r.optional("axis");
+  }
+  r.finish();
+  body.rotate = rot;
+}
+
 BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   const int dim = s.dimension;
   BodySpec body;
@@ -197,6 +228,7 @@ BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   read_initial(b, body, p, s);
   read_stabilisation(b, body, p, s);
   read_other_keys(b, body, p, dim);
+  read_rotate(b, body, dim);
   for (const auto& m : registered_module_keys())
     if (m.read_body)
       if (auto params = m.read_body(b, body, p, s)) body.params[m.module] = std::move(params);
