@@ -18,6 +18,7 @@ double dist2(const Point& a, const Point& b) {
 }  // namespace
 
 Point BodyRotation::apply(const Point& x, bool inverse) const {
+  if (degrees == 0) return x;  // bit for bit the particles as filled
   const double th = (inverse ? -degrees : degrees) * std::numbers::pi / 180;
   const double c = std::cos(th), s = std::sin(th);
   Point r(x.size());

@@ -68,7 +68,8 @@ struct BodyRotation {
   double degrees = 0;
   Point about;
   Point axis{0, 0, 1};
-  Point apply(const Point& x, bool inverse = false) const;  // inverse: turned back
+  // x turned (inverse: turned back); x itself when degrees is 0.
+  Point apply(const Point& x, bool inverse = false) const;
 };
 
 struct BodySpec {
