@@ -167,6 +167,10 @@ int run_main(int argc, char** argv) {
   cmd_study->add_option("--against", study.against,
                         "plot the metric's value against this --vary key (linear axes, one curve "
                         "per combination of the other keys), e.g. variables.angle");
+  cmd_study->add_option("--repeat", study.repeat,
+                        "a --vary key whose values repeat each combination of the others (e.g. "
+                        "variables.seed=1,2,...,N): study_stats.csv gets each metric's mean, "
+                        "Student-t 95 % interval, std and count of zeros over them");
   cmd_study->add_option("--jobs", study.jobs, "runs at once (processes)")->check(whole_number(1));
   cmd_study->add_option("--threads", study.threads, "threads per run (default: cores / jobs)")
       ->check(whole_number(1));

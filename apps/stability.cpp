@@ -39,11 +39,11 @@ std::vector<SuiteScene> read_suite(const std::string& file) {
   std::vector<SuiteScene> out;
   try {
     check_yaml_tree(root, file);
-    MapReader top(root, "");
+    MapReader top(root, "", nullptr);
     auto list = top.node("scenes");
     if (!list.IsSequence()) scene_error("scenes", "expected a list of {scene, quick}");
     for (std::size_t i = 0; i < list.size(); ++i) {
-      MapReader q(list[i], "scenes[" + std::to_string(i) + "]");
+      MapReader q(list[i], "scenes[" + std::to_string(i) + "]", nullptr);
       SuiteScene s;
       s.file = (fs::path(file).parent_path() / q.text("scene")).string();
       if (q.has("quick"))

@@ -15,6 +15,7 @@
 #include "processes.hpp"
 #include "scene/scene.hpp"
 #include "solid/solid_keys.hpp"
+#include "study_stats.hpp"
 
 namespace monosph {
 namespace fs = std::filesystem;
@@ -52,13 +53,6 @@ struct Run {
   std::string output;  // first line of the run's messages when it failed
   nlohmann::json summary;
 };
-
-std::string csv_escape(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string r = "\"";
-  for (char c : s) r += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return r + "\"";
-}
 
 }  // namespace
 
@@ -111,6 +105,42 @@ int against_axis(const std::string& key, const std::vector<Axis>& axes) {
       throw InputError("study: --against " + key + ": value '" + v + "' is not a number");
   }
   return against;
+}
+
+// The index of the --repeat key among the varied keys (-1 without --repeat).
+int repeat_axis(const std::string& key, const std::vector<Axis>& axes) {
+  if (key.empty()) return -1;
+  for (std::size_t a = 0; a < axes.size(); ++a)
+    if (axes[a].key == key) return static_cast<int>(a);
+  throw InputError("study: --repeat " + key +
+                   " is not one of the --vary keys (e.g. --vary variables.seed=1,2,3 --repeat "
+                   "variables.seed)");
+}
+
+// study_stats.csv and study.md's statistics section: each metric over the runs that differ only
+// in the --repeat key (study_stats.hpp).
+void write_repeat_stats(const fs::path& out, const std::vector<Axis>& axes, std::size_t repeat,
+                        const std::vector<Run>& runs, const std::vector<std::string>& metrics) {
+  std::vector<StudyRunValues> values;
+  for (const auto& r : runs) {
+    const auto& s = r.summary;
+    StudyRunValues v{
+        r.values, s.is_object() && s.value("status", std::string()) == "completed", {}};
+    for (const auto& m : metrics) {
+      const bool has =
+          v.completed && s["metrics"].contains(m) && s["metrics"][m]["value"].is_number();
+      v.metrics.push_back(has ? std::optional<double>(s["metrics"][m]["value"].get<double>())
+                              : std::nullopt);
+    }
+    values.push_back(std::move(v));
+  }
+  std::vector<std::string> keys;
+  for (const auto& a : axes) keys.push_back(a.key);
+  const auto rows = study_stats(values, repeat, metrics.size());
+  write_study_stats_csv(out / "study_stats.csv", keys, repeat, metrics, rows);
+  std::ofstream md(out / "study.md", std::ios::app);
+  write_study_stats_md(md, keys, repeat, metrics, rows);
+  fmt::print("study: statistics over {}: {}\n", keys[repeat], (out / "study_stats.csv").string());
 }
 
 // study.csv: one row per run.
@@ -209,6 +239,7 @@ int run_study(const StudyOptions& opt) {
   for (const auto& v : opt.vary) axes.push_back(parse_vary(v));
   // --against KEY: the metric's value against that varied key, one curve per other combination.
   const int against = against_axis(opt.against, axes);
+  const int repeat = repeat_axis(opt.repeat, axes);  // --repeat KEY: statistics over its values
   const bool plot_value = opt.plot_value || against >= 0;
   std::string metric = opt.metric;
   if (metric.empty() && !base.references.empty()) metric = base.references.front().name;
@@ -294,6 +325,7 @@ int run_study(const StudyOptions& opt) {
   write_study_csv(out, axes, runs, metrics);
   // study.md: the same as a table.
   write_study_md(out, base.name, axes, runs, metrics);
+  if (repeat >= 0) write_repeat_stats(out, axes, static_cast<std::size_t>(repeat), runs, metrics);
   // study.png: error against wall time, log-log, one curve per variant of the axes after the
   // first (the first axis, usually dp, runs along each curve).
   bool all_ok = true;

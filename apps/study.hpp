@@ -16,6 +16,7 @@ struct StudyOptions {
   bool fixed_threads = false;          // runs hold their thread count (run --fixed-threads)
   bool plot_value = false;             // plot the metric's value, not its relative error
   std::string against;  // a --vary key: plot the metric's value against it (linear axes)
+  std::string repeat;   // a --vary key (e.g. variables.seed): statistics over its values
 };
 
 // Returns the exit code: 0 when every run completed, 3 when some stopped, 2 on bad input.

@@ -87,6 +87,22 @@ std::vector<double> jitter_draws(unsigned seed, int dim, std::int64_t accepted,
   return jit;
 }
 
+// `rotate`: particle x turned about the body's point (after the fill, before anything reads it);
+// it must stay in the domain.
+template <int D>
+void turn(Vec<D>& x, const BodySpec& body, std::size_t b, const Scene& scene) {
+  const Point r = body.rotate->apply(Point(x.data(), x.data() + D));
+  for (int a = 0; a < D; ++a)
+    if (!(r[a] >= scene.domain_min[a] && r[a] <= scene.domain_max[a])) {
+      std::ostringstream os;
+      os << "bodies[" << b << "] (" << body.name
+         << ").rotate: turns a particle out of the domain, to (";
+      for (int c = 0; c < D; ++c) os << (c ? ", " : "") << r[c];
+      throw InputError(os.str() + ")");
+    }
+  for (int a = 0; a < D; ++a) x[a] = r[a];
+}
+
 }  // namespace
 
 template <int D>
@@ -215,6 +231,7 @@ void Simulation<D>::fill_bodies() {
       pid[i] = next_id + ids[q];
       for (int a = 0; a < D; ++a)
         x[i][a] = pts[q][a] + (jit.empty() ? 0.0 : body.jitter * dp * jit[q * D + a]);
+      if (body.rotate) turn<D>(x[i], body, b, scene_);
       const double xx = x[i][0], yy = x[i][1], zz = D == 3 ? x[i][D - 1] : 0.0;
       rho[i] = rho_ex.empty() ? mat.density : rho_ex(xx, yy, zz, 0.0);
       if (!(rho[i] > 0) || !std::isfinite(rho[i]))  // inf passes > 0

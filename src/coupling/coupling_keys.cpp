@@ -17,7 +17,7 @@ std::optional<MapReader> section(MapReader& r, const char* key) {
     r.optional(key);
     return std::nullopt;
   }
-  return MapReader(r.node(key), key);
+  return MapReader(r.node(key), key, r.constants());
 }
 
 void switch_on(Scene& s, const std::string& module) {

@@ -15,7 +15,7 @@ namespace {
 void read_shifting(MapReader& b, const BodySpec& body, const std::string& p, FluidBodyKeys& k) {
   if (!b.has("shifting")) return void(b.optional("shifting"));
   if (body.phase != "fluid") scene_error(p + ".shifting", "applies to fluid bodies only");
-  MapReader sh(b.node("shifting"), p + ".shifting");
+  MapReader sh(b.node("shifting"), p + ".shifting", b.constants());
   if (sh.choice("form", {"delta_plus", "transport_velocity"}, "delta_plus") == "delta_plus") {
     k.shift_speed = sh.positive("speed");
     k.shift_R = sh.non_negative("R", 0.2);

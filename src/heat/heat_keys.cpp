@@ -22,7 +22,7 @@ ModuleKeys heat_keys() {
             }
             if (body.phase != "solid" && body.phase != "fluid")
               scene_error(p + ".heat_conduction", "applies to solid and fluid bodies");
-            MapReader hc(b.node("heat_conduction"), p + ".heat_conduction");
+            MapReader hc(b.node("heat_conduction"), p + ".heat_conduction", b.constants());
             k->conductivity = hc.positive("conductivity");
             hc.finish();
             const Material& m = s.materials[body.material];

@@ -168,7 +168,8 @@ void ClusterModule<D>::on_create(Simulation<D>& sim) {
       if (bd[i] != static_cast<std::int64_t>(b)) continue;
       std::size_t part = 0;
       if (per_part) {
-        const Point xi(x[i].data(), x[i].data() + D);
+        Point xi(x[i].data(), x[i].data() + D);
+        if (spec.rotate) xi = spec.rotate->apply(xi, true);  // where the fill found it
         while (part < nparts && !spec.shape.parts[part].contains(xi)) ++part;
         if (part == nparts) {
           err = "bodies[" + std::to_string(b) + "] (" + spec.name +

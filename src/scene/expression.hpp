@@ -10,6 +10,19 @@ namespace monosph {
 // Named constants an expression may use besides x, y, z, t, pi and e.
 using Constants = std::map<std::string, double>;
 
+// The expressions' function uniform(seed, stream): a number in [0, 1) that depends only on the
+// two arguments, the same on every machine. Each is rounded to the nearest whole number (NaN
+// when that is not finite or beyond +-2^53); with a = round(seed), b = round(stream) as 64-bit
+// two's complement, u = splitmix64(splitmix64(a) + b) >> 11, times 2^-53.
+double seeded_uniform(double seed, double stream);
+
+// A number key written as an expression of the scene's variables, e.g.
+// "2e-5*(uniform(seed,1)-0.5)" (no x, y, z or t). Throws InputError
+// "<where>: expected a number, got '<text>' (...)" naming the reason; the value may be
+// non-finite (the caller says so).
+double constant_expression(const std::string& text, const std::string& where,
+                           const Constants& constants);
+
 class Expression {
  public:
   Expression();

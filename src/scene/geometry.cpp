@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "core/shell_fill.hpp"
 #include "scene/scene.hpp"
@@ -15,6 +16,27 @@ double dist2(const Point& a, const Point& b) {
   return s;
 }
 }  // namespace
+
+Point BodyRotation::apply(const Point& x, bool inverse) const {
+  if (degrees == 0) return x;  // bit for bit the particles as filled
+  const double th = (inverse ? -degrees : degrees) * std::numbers::pi / 180;
+  const double c = std::cos(th), s = std::sin(th);
+  Point r(x.size());
+  Point v(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) v[k] = x[k] - about[k];
+  if (x.size() == 2) {
+    r[0] = about[0] + c * v[0] - s * v[1];
+    r[1] = about[1] + s * v[0] + c * v[1];
+    return r;
+  }
+  // Rodrigues: v c + (k x v) s + k (k.v)(1 - c), k the unit axis.
+  const Point& k = axis;
+  const double kv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
+  const double kxv[3] = {k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2],
+                         k[0] * v[1] - k[1] * v[0]};
+  for (int a = 0; a < 3; ++a) r[a] = about[a] + v[a] * c + kxv[a] * s + k[a] * kv * (1 - c);
+  return r;
+}
 
 bool Shape::contains(const Point& x) const {
   switch (kind) {

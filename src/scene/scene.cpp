@@ -33,7 +33,7 @@ void read_kernel(MapReader& r, Scene& s) {
     s.kernel = kernel_from_name(as_text(kn, "kernel"));
     return;
   }
-  MapReader k(kn, "kernel");
+  MapReader k(kn, "kernel", r.constants());
   s.kernel = kernel_from_name(
       k.choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"}, "cubic_spline"));
   s.h_factor = k.positive("h_factor", 1.3);
@@ -45,7 +45,7 @@ void read_kernel(MapReader& r, Scene& s) {
 
 void read_domain(MapReader& r, Scene& s) {
   const int dim = s.dimension;
-  MapReader d(r.node("domain"), "domain");
+  MapReader d(r.node("domain"), "domain", r.constants());
   s.domain_min = d.vector("min", dim);
   s.domain_max = d.vector("max", dim);
   for (int a = 0; a < dim; ++a)
@@ -85,7 +85,7 @@ void read_domain(MapReader& r, Scene& s) {
 
 void read_neighbours(MapReader& r, Scene& s) {
   if (!r.has("neighbours")) return void(r.optional("neighbours"));
-  MapReader nb(r.node("neighbours"), "neighbours");
+  MapReader nb(r.node("neighbours"), "neighbours", r.constants());
   s.skin_factor = nb.positive("skin", 0.3);
   if (s.skin_factor > 2)
     scene_error("neighbours.skin",
@@ -101,7 +101,7 @@ void read_materials(MapReader& r, Scene& s) {
     scene_error("materials", "expected a map of named materials");
   for (auto it = mats.begin(); it != mats.end(); ++it) {
     std::string name = it->first.as<std::string>();
-    s.materials.push_back(read_material(name, it->second, "materials." + name));
+    s.materials.push_back(read_material(name, it->second, "materials." + name, r.constants()));
   }
 }
 
@@ -122,7 +122,7 @@ void read_modules(MapReader& r, Scene& s) {
 
 void read_probe_section(MapReader& r, Scene& s) {
   if (!r.has("probes")) return void(r.optional("probes"));
-  MapReader pr(r.node("probes"), "probes");
+  MapReader pr(r.node("probes"), "probes", r.constants());
   read_probes(pr, s);  // scene_probes.cpp
   pr.finish();
 }
@@ -154,7 +154,7 @@ Scene read_scene(const std::string& text, const std::vector<std::string>& overri
     out << root;
     s.yaml = out.c_str();
   }
-  MapReader r(root, "");
+  MapReader r(root, "", nullptr);  // plain numbers until the variables are read
   s.name = r.text("name", "scene");
   check_name(s.name);
   s.description = r.text("description", "");
@@ -163,6 +163,7 @@ Scene read_scene(const std::string& text, const std::vector<std::string>& overri
     scene_error("dimension", "must be 2 or 3, got " + std::to_string(s.dimension));
   const int dim = s.dimension;
   s.variables = read_variables(r);  // before every expression that may use them
+  r.set_constants(&s.variables);    // every number key below may be an expression of them
   s.dp = r.positive("dp");
 
   read_kernel(r, s);

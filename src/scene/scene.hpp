@@ -61,6 +61,17 @@ struct Material {
 std::optional<Material> library_material(const std::string& name);
 std::vector<std::string> library_material_names();
 
+// A body's `rotate`: its particles turned by `degrees` about the point `about` (3D: about the
+// unit `axis` through it; counter-clockwise seen from where the axis points) right after the
+// fill, before anything reads them.
+struct BodyRotation {
+  double degrees = 0;
+  Point about;
+  Point axis{0, 0, 1};
+  // x turned (inverse: turned back); x itself when degrees is 0.
+  Point apply(const Point& x, bool inverse = false) const;
+};
+
 struct BodySpec {
   std::string name;
   std::string phase;      // fluid | solid | wall
@@ -88,6 +99,7 @@ struct BodySpec {
   bool fill_rest = false;    // takes only the lattice nodes no other body takes
   bool fill_shells = false;  // body-fitted concentric shells (sphere, ring; shell_fill.hpp)
   Point angular_velocity;    // rigid: initial (2D: one value; 3D: a vector)
+  std::optional<BodyRotation> rotate;  // particles turned after the fill
   // Each module's parameters of this body, read by the module (scene/module_keys.hpp).
   ParamMap params;
 };

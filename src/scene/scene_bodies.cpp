@@ -25,7 +25,7 @@ void check_expression(const std::string& text, const std::string& path, const Co
 //   f(x) = (cosh kx - cos kx) - s (sinh kx - sin kx), s = (cosh kl - cos kl)/(sinh kl - sin kl),
 //   zero outside [clamp, clamp + length].
 std::vector<std::string> velocity_profile(MapReader& in, int dim) {
-  MapReader pr(in.node("velocity_profile"), in.at("velocity_profile"));
+  MapReader pr(in.node("velocity_profile"), in.at("velocity_profile"), in.constants());
   const std::string type = pr.choice("type", {"cantilever_mode", "clamped_clamped_mode"});
   const bool cc = type == "clamped_clamped_mode";
   const double vl = pr.number("amplitude");
@@ -95,7 +95,7 @@ void read_body_head(MapReader& b, BodySpec& body, const std::string& p, const Sc
 void read_initial(MapReader& b, BodySpec& body, const std::string& p, const Scene& s) {
   const int dim = s.dimension;
   if (!b.has("initial")) return void(b.optional("initial"));
-  MapReader in(b.node("initial"), p + ".initial");
+  MapReader in(b.node("initial"), p + ".initial", b.constants());
   body.density_expr = in.text("density", "");
   body.temperature = in.positive("temperature", 0.0 + body.temperature);
   if (!body.density_expr.empty())
@@ -125,7 +125,7 @@ void read_initial(MapReader& b, BodySpec& body, const std::string& p, const Scen
 // stress divergence.
 void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, const Scene& s) {
   if (b.has("artificial_viscosity")) {
-    MapReader av(b.node("artificial_viscosity"), p + ".artificial_viscosity");
+    MapReader av(b.node("artificial_viscosity"), p + ".artificial_viscosity", b.constants());
     body.av_alpha = av.non_negative("alpha", 0.0);
     body.av_beta = av.non_negative("beta", 0.0);
     av.finish();
@@ -133,7 +133,7 @@ void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, cons
     b.optional("artificial_viscosity");
   }
   if (b.has("artificial_stress")) {
-    MapReader as(b.node("artificial_stress"), p + ".artificial_stress");
+    MapReader as(b.node("artificial_stress"), p + ".artificial_stress", b.constants());
     body.as_epsilon = as.non_negative("epsilon", 0.3);
     body.as_n = as.positive("n", 4.0);
     as.finish();
@@ -141,7 +141,7 @@ void read_stabilisation(MapReader& b, BodySpec& body, const std::string& p, cons
     b.optional("artificial_stress");
   }
   if (b.has("density_diffusion")) {
-    MapReader dd(b.node("density_diffusion"), p + ".density_diffusion");
+    MapReader dd(b.node("density_diffusion"), p + ".density_diffusion", b.constants());
     body.delta = dd.non_negative("delta", 0.1);
     dd.finish();
   } else {
@@ -178,17 +178,48 @@ void read_other_keys(MapReader& b, BodySpec& body, const std::string& p, int dim
     scene_error(p + ".fill", "shells needs a sphere (circle in 2D) or ring shape");
 }
 
+// `rotate: {degrees, about, axis}`: the particles turned after the fill; `about` defaults to the
+// centre of the shape's bounding box, `axis` (3D only) to z.
+void read_rotate(MapReader& b, BodySpec& body, int dim) {
+  if (!b.has("rotate")) return void(b.optional("rotate"));
+  MapReader r(b.node("rotate"), b.at("rotate"), b.constants());
+  BodyRotation rot;
+  rot.degrees = r.number("degrees");
+  if (r.has("about")) {
+    rot.about = r.vector("about", dim);
+  } else {
+    r.optional("about");
+    Point lo, hi;
+    body.shape.bounds(lo, hi);
+    for (int a = 0; a < dim; ++a) rot.about.push_back(0.5 * (lo[a] + hi[a]));
+  }
+  if (dim == 2 && r.has("axis"))
+    scene_error(r.at("axis"), "applies to 3D scenes only (a 2D body turns about the point)");
+  if (dim == 3 && r.has("axis")) {
+    rot.axis = r.vector("axis", 3);
+    const double a2 =
+        rot.axis[0] * rot.axis[0] + rot.axis[1] * rot.axis[1] + rot.axis[2] * rot.axis[2];
+    if (!(a2 > 0) || !std::isfinite(a2))
+      scene_error(r.at("axis"), "must be a finite non-zero vector");
+    for (double& c : rot.axis) c /= std::sqrt(a2);
+  } else {
+    r.optional("axis");
+  }
+  r.finish();
+  body.rotate = rot;
+}
+
 BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   const int dim = s.dimension;
   BodySpec body;
-  body.name = MapReader(node, "bodies[" + std::to_string(i) + "]").text("name");
+  body.name = MapReader(node, "bodies[" + std::to_string(i) + "]", nullptr).text("name");
   const std::string p = "bodies[" + std::to_string(i) + "] (" + body.name + ")";
-  MapReader b(node, p);  // the name in the paths of the body's keys
+  MapReader b(node, p, &s.variables);  // the name in the paths of the body's keys
   b.text("name");
   for (const auto& other : s.bodies)
     if (other.name == body.name) scene_error(p + ".name", "duplicate body name");
   read_body_head(b, body, p, s);
-  body.shape = read_shape(b.node("shape"), p + ".shape", dim);
+  body.shape = read_shape(b.node("shape"), p + ".shape", dim, b.constants());
   body.jitter = b.non_negative("jitter", 0.0);
   if (body.jitter >= 0.5) scene_error(p + ".jitter", "must be below 0.5 (fraction of dp)");
   const int seed = b.integer("seed", 1);
@@ -197,6 +228,7 @@ BodySpec read_body(const YAML::Node& node, std::size_t i, const Scene& s) {
   read_initial(b, body, p, s);
   read_stabilisation(b, body, p, s);
   read_other_keys(b, body, p, dim);
+  read_rotate(b, body, dim);
   for (const auto& m : registered_module_keys())
     if (m.read_body)
       if (auto params = m.read_body(b, body, p, s)) body.params[m.module] = std::move(params);
@@ -298,7 +330,7 @@ void read_boundaries(MapReader& r, Scene& s) {
   if (!bcs.IsSequence()) scene_error("boundary_conditions", "expected a list");
   for (std::size_t i = 0; i < bcs.size(); ++i) {
     std::string p = "boundary_conditions[" + std::to_string(i) + "]";
-    MapReader b(bcs[i], p);
+    MapReader b(bcs[i], p, r.constants());
     BoundarySpec bc;
     bc.type = b.choice("type", {"fixed", "velocity"});
     bc.name = b.text("name", "bc" + std::to_string(i));
@@ -316,7 +348,7 @@ void read_boundaries(MapReader& r, Scene& s) {
       b.optional("region");
       b.optional("point");
     } else {
-      bc.region = read_shape(b.node("region"), p + ".region", dim);
+      bc.region = read_shape(b.node("region"), p + ".region", dim, b.constants());
       b.optional("body");
       b.optional("point");
     }

@@ -60,6 +60,9 @@ json body_json(const BodySpec& b) {
             {"fill_rest", b.fill_rest},
             {"fill_shells", b.fill_shells},
             {"angular_velocity", b.angular_velocity}};
+  if (b.rotate)
+    j["rotate"] = {
+        {"degrees", b.rotate->degrees}, {"about", b.rotate->about}, {"axis", b.rotate->axis}};
   add_params(j, b.params);
   return j;
 }

@@ -37,8 +37,9 @@ double Material::wave_speed() const {
   return std::sqrt((bulk_modulus + 4.0 * shear_modulus / 3.0) / density);
 }
 
-Material read_material(const std::string& name, const YAML::Node& n, const std::string& path) {
-  MapReader r(n, path);
+Material read_material(const std::string& name, const YAML::Node& n, const std::string& path,
+                       const Constants* constants) {
+  MapReader r(n, path, constants);
   Material m;
   std::string preset;
   if (r.has("preset")) {

@@ -17,10 +17,12 @@ namespace monosph {
 void apply_override(YAML::Node& root, const std::string& item);
 
 // scene_materials.cpp: one entry of `materials`.
-Material read_material(const std::string& name, const YAML::Node& n, const std::string& path);
+Material read_material(const std::string& name, const YAML::Node& n, const std::string& path,
+                       const Constants* constants);
 
 // scene_shapes.cpp: a body's or region's shape.
-Shape read_shape(const YAML::Node& node, const std::string& path, int dim);
+Shape read_shape(const YAML::Node& node, const std::string& path, int dim,
+                 const Constants* constants);
 
 // scene_bodies.cpp: `bodies` (with the modules they switch on) and `boundary_conditions`.
 void read_bodies(MapReader& root, Scene& s);

@@ -97,7 +97,7 @@ Point read_axis(MapReader& q, int dim) {
     axis[k] = 1;
     return axis;
   }
-  axis = as_vector(n, at, dim);
+  axis = as_vector(n, at, dim, q.constants());
   double a2 = 0;
   for (double c : axis) a2 += c * c;
   if (!(a2 > 0)) scene_error(at, "must not be the zero vector");
@@ -137,7 +137,7 @@ void read_sensor(MapReader& q, ProbeSpec& ps, int dim) {
                           " or a vector)");
     normal[k] = sign;
   } else {
-    normal = as_vector(n, at, dim);
+    normal = as_vector(n, at, dim, q.constants());
   }
   double n2 = 0;
   for (double c : normal) n2 += c * c;
@@ -216,7 +216,7 @@ std::vector<std::string> column_names(const ProbeSpec& ps) {
 
 ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& s) {
   const int dim = s.dimension;
-  MapReader q(node, p);
+  MapReader q(node, p, &s.variables);
   ProbeSpec ps;
   ps.name = q.text("name");
   check_probe_name(ps.name, q.at("name"));
@@ -248,7 +248,7 @@ ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& 
     q.optional("point");
   if (ps.type == "wall_pressure") read_sensor(q, ps, dim);
   if (ps.type == "diameter") {
-    ps.axis = as_vector(q.node("axis"), q.at("axis"), dim);
+    ps.axis = as_vector(q.node("axis"), q.at("axis"), dim, q.constants());
     double a2 = 0;
     for (double c : ps.axis) a2 += c * c;
     if (!(a2 > 0)) scene_error(p + ".axis", "must not be the zero vector");

@@ -1,5 +1,7 @@
 #include "scene/scene_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -63,7 +65,7 @@ std::string closest_word(const std::string& word, const std::vector<std::string>
   return bd <= std::max<std::size_t>(2, word.size() / 3) ? best : "";
 }
 
-double as_number(const YAML::Node& n, const std::string& path) {
+double as_number(const YAML::Node& n, const std::string& path, const Constants* constants) {
   if (!n.IsScalar()) scene_error(path, "expected a number, got " + describe(n));
   double v;
   try {
@@ -74,7 +76,10 @@ double as_number(const YAML::Node& n, const std::string& path) {
     const double d = std::strtod(n.Scalar().c_str(), &end);
     if (!n.Scalar().empty() && end && *end == '\0' && std::isinf(d))
       scene_error(path, "expected a finite number, got " + describe(n));
-    scene_error(path, "expected a number, got " + describe(n));
+    if (!constants) scene_error(path, "expected a number, got " + describe(n));
+    v = constant_expression(n.Scalar(), path, *constants);  // expression.cpp
+    if (!std::isfinite(v))
+      scene_error(path, "expected a finite number, got " + describe(n) + fmt::format(" (= {})", v));
   }
   if (!std::isfinite(v)) scene_error(path, "expected a finite number, got " + describe(n));
   return v;
@@ -85,18 +90,19 @@ std::string as_text(const YAML::Node& n, const std::string& path) {
   return n.Scalar();
 }
 
-std::vector<double> as_vector(const YAML::Node& n, const std::string& path, int size) {
+std::vector<double> as_vector(const YAML::Node& n, const std::string& path, int size,
+                              const Constants* constants) {
   if (!n.IsSequence() || static_cast<int>(n.size()) != size)
     scene_error(path, "expected a list of " + std::to_string(size) + " numbers, got " +
                           describe(n) + (n.IsSequence() ? " of " + std::to_string(n.size()) : ""));
   std::vector<double> v;
   for (std::size_t i = 0; i < n.size(); ++i)
-    v.push_back(as_number(n[i], path + "[" + std::to_string(i) + "]"));
+    v.push_back(as_number(n[i], path + "[" + std::to_string(i) + "]", constants));
   return v;
 }
 
-MapReader::MapReader(const YAML::Node& node, std::string path)
-    : node_(node), path_(std::move(path)) {
+MapReader::MapReader(const YAML::Node& node, std::string path, const Constants* constants)
+    : node_(node), path_(std::move(path)), constants_(constants) {
   if (!node.IsMap()) scene_error(path_, "expected a map of keys, got " + describe(node));
 }
 
@@ -131,14 +137,24 @@ YAML::Node MapReader::optional(const std::string& key) {
 }
 
 double MapReader::number(const std::string& key) {
-  return as_number(node(key), at(key));
+  return as_number(node(key), at(key), constants_);
+}
+// A plain number as written; an expression with its value ('2*seed' = -2).
+std::string MapReader::shown(const std::string& key, double v) const {
+  const YAML::Node n = node_[key];
+  try {
+    n.as<double>();
+    return n.Scalar();
+  } catch (const YAML::Exception&) {
+    return fmt::format("'{}' = {}", n.Scalar(), v);
+  }
 }
 double MapReader::number(const std::string& key, double fallback) {
   return has(key) ? number(key) : (used_.insert(key), fallback);
 }
 double MapReader::positive(const std::string& key) {
   double v = number(key);
-  if (!(v > 0)) scene_error(at(key), "must be positive, got " + node_[key].Scalar());
+  if (!(v > 0)) scene_error(at(key), "must be positive, got " + shown(key, v));
   return v;
 }
 double MapReader::positive(const std::string& key, double fallback) {
@@ -147,16 +163,15 @@ double MapReader::positive(const std::string& key, double fallback) {
 double MapReader::non_negative(const std::string& key, double fallback) {
   if (!has(key)) return used_.insert(key), fallback;
   double v = number(key);
-  if (v < 0) scene_error(at(key), "must not be negative, got " + node_[key].Scalar());
+  if (v < 0) scene_error(at(key), "must not be negative, got " + shown(key, v));
   return v;
 }
 int MapReader::integer(const std::string& key, int fallback) {
   if (!has(key)) return used_.insert(key), fallback;
   double v = number(key);
-  if (v != std::floor(v))
-    scene_error(at(key), "expected a whole number, got " + node_[key].Scalar());
+  if (v != std::floor(v)) scene_error(at(key), "expected a whole number, got " + shown(key, v));
   if (std::abs(v) > 2147483647.0)
-    scene_error(at(key), "must lie within +-2147483647, got " + node_[key].Scalar());
+    scene_error(at(key), "must lie within +-2147483647, got " + shown(key, v));
   return static_cast<int>(v);
 }
 bool MapReader::boolean(const std::string& key, bool fallback) {
@@ -185,7 +200,7 @@ std::string MapReader::choice(const std::string& key, const std::vector<std::str
   return v;
 }
 std::vector<double> MapReader::vector(const std::string& key, int size) {
-  return as_vector(node(key), at(key), size);
+  return as_vector(node(key), at(key), size, constants_);
 }
 std::vector<std::string> MapReader::strings(const std::string& key) {
   auto n = node(key);

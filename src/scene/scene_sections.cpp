@@ -20,7 +20,7 @@ void check_range(double v, double lo, double hi, const std::string& path,
 
 void read_time_step(MapReader& r, Scene& s) {
   if (!r.has("time_step")) return void(r.optional("time_step"));
-  MapReader t(r.node("time_step"), "time_step");
+  MapReader t(r.node("time_step"), "time_step", r.constants());
   s.cfl = t.positive("cfl", 0.3);
   check_range(s.cfl, 1e-3, 1, "time_step.cfl");
   s.force_factor = t.positive("force_factor", 0.25);
@@ -38,7 +38,7 @@ void read_time_step(MapReader& r, Scene& s) {
                 fmt::format("must be a whole number in [1, 1000], got {:g}", ms));
   s.max_substeps = static_cast<int>(ms);
   if (t.has("dual_criteria")) {
-    MapReader dc(t.node("dual_criteria"), "time_step.dual_criteria");
+    MapReader dc(t.node("dual_criteria"), "time_step.dual_criteria", t.constants());
     // Zhang et al. 2024, Eq. 21; 0 switches dual-criteria stepping off (a study can vary it).
     s.advection_cfl = dc.non_negative("advection_cfl", 0.2);
     s.acoustic_cfl = dc.positive("acoustic_cfl", 0.4);  // Eq. 22
@@ -62,7 +62,7 @@ void read_time_step(MapReader& r, Scene& s) {
 
 void read_guards(MapReader& r, Scene& s) {
   if (!r.has("guards")) return void(r.optional("guards"));
-  MapReader g(r.node("guards"), "guards");
+  MapReader g(r.node("guards"), "guards", r.constants());
   s.max_mach = g.positive("max_mach", 0.5);
   s.min_distance = g.non_negative("min_distance", 0.1);
   if (s.min_distance >= 1)
@@ -73,7 +73,7 @@ void read_guards(MapReader& r, Scene& s) {
 
 void read_output(MapReader& r, Scene& s) {
   if (!r.has("output")) return void(r.optional("output"));
-  MapReader o(r.node("output"), "output");
+  MapReader o(r.node("output"), "output", r.constants());
   s.output_every = o.non_negative("every", 0.0);
   s.checkpoint_every = o.non_negative("checkpoint_every", 0.0);
   if (o.has("fields"))
@@ -89,7 +89,7 @@ void read_references(MapReader& r, Scene& s) {
   if (!refs.IsSequence()) scene_error("reference", "expected a list");
   for (std::size_t i = 0; i < refs.size(); ++i) {
     std::string p = "reference[" + std::to_string(i) + "]";
-    MapReader q(refs[i], p);
+    MapReader q(refs[i], p, r.constants());
     ReferenceSpec rs;
     rs.name = q.text("name");
     for (const auto& other : s.references)
@@ -115,7 +115,7 @@ void read_checks(MapReader& r, Scene& s) {
   if (!list.IsSequence()) scene_error("checks", "expected a list");
   for (std::size_t i = 0; i < list.size(); ++i) {
     std::string p = "checks[" + std::to_string(i) + "]";
-    MapReader q(list[i], p);
+    MapReader q(list[i], p, r.constants());
     CheckSpec c;
     c.name = q.text("name");
     for (const auto& other : s.checks)
@@ -138,7 +138,7 @@ void read_checks(MapReader& r, Scene& s) {
 // The size guard's limits (scene_checks.cpp): particles and bytes.
 void read_limits(MapReader& r, Scene& s) {
   if (!r.has("limits")) return void(r.optional("limits"));
-  MapReader l(r.node("limits"), "limits");
+  MapReader l(r.node("limits"), "limits", r.constants());
   s.max_particles = l.positive("max_particles", 0.0);
   s.max_memory = l.positive("max_memory", 0.0);
   l.finish();

@@ -4,7 +4,8 @@
 
 namespace monosph {
 
-Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
+Shape read_shape(const YAML::Node& node, const std::string& path, int dim,
+                 const Constants* constants) {
   static const std::vector<std::string> kinds = {"box",     "circle",        "sphere",
                                                  "ring",    "hollow_sphere", "cylinder",
                                                  "polygon", "union",         "difference"};
@@ -20,12 +21,12 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
     if (!body.IsSequence() || body.size() < 1) scene_error(p, "expected a list of shapes");
     s.kind = k;
     for (std::size_t i = 0; i < body.size(); ++i)
-      s.parts.push_back(read_shape(body[i], p + "[" + std::to_string(i) + "]", dim));
+      s.parts.push_back(read_shape(body[i], p + "[" + std::to_string(i) + "]", dim, constants));
     if (k == Shape::Kind::Difference && s.parts.size() < 2)
       scene_error(p, "expected a base shape followed by at least one shape to subtract");
   };
   if (kind == "box") {
-    MapReader r(body, p);
+    MapReader r(body, p, constants);
     s.kind = Shape::Kind::Box;
     s.a = r.vector("min", dim);
     s.b = r.vector("max", dim);
@@ -33,13 +34,13 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
     for (int k = 0; k < dim; ++k)
       if (!(s.b[k] > s.a[k])) scene_error(p + ".max", "must be greater than min in every axis");
   } else if ((kind == "circle" && dim == 2) || (kind == "sphere" && dim == 3)) {
-    MapReader r(body, p);
+    MapReader r(body, p, constants);
     s.kind = Shape::Kind::Sphere;
     s.center = r.vector("center", dim);
     s.r0 = r.positive("radius");
     r.finish();
   } else if ((kind == "ring" && dim == 2) || (kind == "hollow_sphere" && dim == 3)) {
-    MapReader r(body, p);
+    MapReader r(body, p, constants);
     s.kind = Shape::Kind::Ring;
     s.center = r.vector("center", dim);
     s.r0 = r.positive("inner");
@@ -47,19 +48,20 @@ Shape read_shape(const YAML::Node& node, const std::string& path, int dim) {
     r.finish();
     if (!(s.r1 > s.r0)) scene_error(p + ".outer", "must be greater than inner");
   } else if (kind == "cylinder" && dim == 3) {
-    MapReader r(body, p);
+    MapReader r(body, p, constants);
     s.kind = Shape::Kind::Cylinder;
     s.a = r.vector("start", 3);
     s.b = r.vector("end", 3);
     s.r0 = r.positive("radius");
     r.finish();
   } else if (kind == "polygon" && dim == 2) {
-    MapReader r(body, p);
+    MapReader r(body, p, constants);
     s.kind = Shape::Kind::Polygon;
     auto v = r.node("vertices");
     if (!v.IsSequence() || v.size() < 3) scene_error(p + ".vertices", "expected at least 3 points");
     for (std::size_t i = 0; i < v.size(); ++i)
-      s.vertices.push_back(as_vector(v[i], p + ".vertices[" + std::to_string(i) + "]", 2));
+      s.vertices.push_back(
+          as_vector(v[i], p + ".vertices[" + std::to_string(i) + "]", 2, constants));
     r.finish();
   } else if (kind == "union") {
     list_of_shapes(Shape::Kind::Union);

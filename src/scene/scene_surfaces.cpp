@@ -12,11 +12,11 @@ namespace {
 // `folder` resolves a relative STL path (the scene file's folder; empty: the working directory).
 SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim,
                          const std::filesystem::path& folder, const Constants& vars) {
-  MapReader r(node, index_path);
+  MapReader r(node, index_path, &vars);
   SurfaceSpec s;
   s.name = r.text("name");
   const std::string p = index_path + " (" + s.name + ")";
-  MapReader q(node, p);  // the same map, with the name in the paths of its keys
+  MapReader q(node, p, &vars);  // the same map, with the name in the paths of its keys
   q.text("name");
   s.friction = q.non_negative("friction", 0.0);
   s.damping = q.non_negative("damping", 0.0);
@@ -51,7 +51,7 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
     if (!v.IsSequence() || v.size() < min_count)
       scene_error(g, "expected a list of at least " + std::to_string(min_count) + " points");
     for (std::size_t i = 0; i < v.size(); ++i)
-      s.points.push_back(as_vector(v[i], g + "[" + std::to_string(i) + "]", dim));
+      s.points.push_back(as_vector(v[i], g + "[" + std::to_string(i) + "]", dim, &vars));
   };
   auto distinct = [&](std::size_t i, std::size_t j) {
     double d2 = 0;
@@ -60,14 +60,14 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
       scene_error(g, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide");
   };
   if (s.kind == "box") {
-    MapReader b(q.node("box"), g);
+    MapReader b(q.node("box"), g, &vars);
     s.points = {b.vector("min", dim), b.vector("max", dim)};
     b.finish();
     for (int a = 0; a < dim; ++a)
       if (!(s.points[1][a] > s.points[0][a]))
         scene_error(g + ".max", "must be greater than min in every axis");
   } else if (s.kind == "plane") {
-    MapReader b(q.node("plane"), g);
+    MapReader b(q.node("plane"), g, &vars);
     s.points = {b.vector("point", dim), b.vector("normal", dim)};
     double nn = 0;
     for (double c : s.points[1]) nn += c * c;
@@ -100,7 +100,7 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
       if (!v[i].IsSequence() || v[i].size() != 3)
         scene_error(ti, "expected three corners [[x, y, z], [x, y, z], [x, y, z]]");
       for (std::size_t c = 0; c < 3; ++c)
-        s.points.push_back(as_vector(v[i][c], ti + "[" + std::to_string(c) + "]", 3));
+        s.points.push_back(as_vector(v[i][c], ti + "[" + std::to_string(c) + "]", 3, &vars));
     }
   } else {  // stl
     std::filesystem::path f = q.text("stl");

@@ -7,11 +7,11 @@ namespace monosph {
 
 namespace {
 // Names an expression already gives a meaning to (coordinates, time, constants, muparser's
-// built-in functions).
+// built-in functions, our uniform(seed, stream)).
 const std::vector<std::string> kReserved = {
-    "x",    "y",    "z",    "t",    "pi",    "e",     "sin",   "cos",  "tan",   "asin", "acos",
-    "atan", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "log2", "log10", "log",  "ln",
-    "exp",  "sqrt", "sign", "rint", "abs",   "min",   "max",   "sum",  "avg"};
+    "x",    "y",    "z",    "t",    "pi",    "e",     "sin",   "cos",  "tan",   "asin",   "acos",
+    "atan", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "log2", "log10", "log",    "ln",
+    "exp",  "sqrt", "sign", "rint", "abs",   "min",   "max",   "sum",  "avg",   "uniform"};
 
 bool identifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
@@ -41,9 +41,9 @@ Constants read_variables(MapReader& root) {
       scene_error(path, "a variable name is a letter or _ followed by letters, digits or _");
     if (std::find(kReserved.begin(), kReserved.end(), name) != kReserved.end())
       scene_error(path, "'" + name +
-                            "' already has a meaning in expressions (x, y, z, t, pi, e "
-                            "and muparser's functions are reserved)");
-    c[name] = as_number(it->second, path);
+                            "' already has a meaning in expressions (x, y, z, t, pi, e, "
+                            "uniform and muparser's functions are reserved)");
+    c[name] = as_number(it->second, path, nullptr);  // plain numbers
   }
   return c;
 }

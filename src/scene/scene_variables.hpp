@@ -13,7 +13,7 @@
 namespace monosph {
 
 // Reads the optional `variables` map of the scene root (names: identifiers that are not x, y, z,
-// t, pi, e or a muparser function; values: numbers).
+// t, pi, e, uniform or a muparser function; values: numbers, not expressions).
 Constants read_variables(MapReader& root);
 
 // Throws InputError if `item` ("variables.NAME=value") names a variable that `root` (the scene

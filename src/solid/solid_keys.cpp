@@ -15,7 +15,7 @@ void read_hourglass(MapReader& b, const BodySpec& body, const std::string& p, So
   if (!b.has("hourglass")) return void(b.optional("hourglass"));
   if (body.phase != "solid")
     scene_error(p + ".hourglass", "hourglass control applies to solid bodies only");
-  MapReader hg(b.node("hourglass"), p + ".hourglass");
+  MapReader hg(b.node("hourglass"), p + ".hourglass", b.constants());
   // Ganzenmueller's alpha (Eq. 31-32) is MMB's xi (Eq. 32): one coefficient, two names.
   if (hg.has("alpha") && hg.has("xi")) scene_error(hg.path(), "give either xi or alpha");
   if (hg.has("alpha")) {
@@ -44,7 +44,7 @@ void read_hourglass(MapReader& b, const BodySpec& body, const std::string& p, So
 void read_self_contact(MapReader& b, const BodySpec& body, const std::string& p, SolidBodyKeys& k) {
   if (!b.has("self_contact")) return void(b.optional("self_contact"));
   if (body.phase != "solid") scene_error(p + ".self_contact", "applies to solid bodies only");
-  MapReader sc(b.node("self_contact"), p + ".self_contact");
+  MapReader sc(b.node("self_contact"), p + ".self_contact", b.constants());
   k.self_contact = sc.positive("distance");
   if (k.self_contact >= 1)
     scene_error(p + ".self_contact.distance", "must be below 1 (a fraction of dp)");

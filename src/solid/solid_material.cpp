@@ -65,7 +65,7 @@ bool is_none(MapReader& r, const char* key, const char* map) {
 void read_plasticity(MapReader& r, JohnsonCook& jc) {
   if (is_none(r, "plasticity", "{A, B, n, ...}")) return void(jc.on = false);
   if (!r.has("plasticity")) return void(r.optional("plasticity"));
-  MapReader q(r.node("plasticity"), r.at("plasticity"));
+  MapReader q(r.node("plasticity"), r.at("plasticity"), r.constants());
   q.choice("type", {"johnson_cook"}, "johnson_cook");
   jc.on = true;
   jc.A = jc.A > 0 ? q.positive("A", jc.A) : q.positive("A");
@@ -86,7 +86,7 @@ void read_plasticity(MapReader& r, JohnsonCook& jc) {
 void read_damage(MapReader& r, JohnsonCookDamage& d) {
   if (is_none(r, "damage", "{D1..D5}")) return void(d.on = false);
   if (!r.has("damage")) return void(r.optional("damage"));
-  MapReader q(r.node("damage"), r.at("damage"));
+  MapReader q(r.node("damage"), r.at("damage"), r.constants());
   q.choice("type", {"johnson_cook"}, "johnson_cook");
   const bool preset = d.on;  // D1-D3 have no neutral value: required unless a preset gave them
   d.on = true;

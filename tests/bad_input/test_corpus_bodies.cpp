@@ -153,6 +153,17 @@ const SceneCase kBodies[] = {
     {"total_lagrangian_shared_continuum", kSolid3d, "    hourglass: {xi: 1}",
      "    hourglass: {xi: 1}\n    formulation: total_lagrangian\n    continuum: rod",
      "bodies[0] (ball).continuum: a total_lagrangian body cannot share its continuum"},
+    {"rotate_zero_axis", kSolid3d, "    hourglass: {xi: 1}",
+     "    hourglass: {xi: 1}\n    rotate: {degrees: 30, axis: [0, 0, 0]}",
+     "bodies[0] (ball).rotate.axis: must be a finite non-zero vector"},
+    {"rotate_axis_in_2d", kFluid, kPlate,
+     "    hourglass: {xi: 1}\n    rotate: {degrees: 30, axis: z}",
+     "bodies[2] (plate).rotate.axis: applies to 3D scenes only"},
+    {"rotate_degrees_text", kFluid, kPlate, "    hourglass: {xi: 1}\n    rotate: {degrees: lots}",
+     "bodies[2] (plate).rotate.degrees: expected a number, got 'lots'"},
+    {"rotate_out_of_the_domain", kFluid, kPlate,
+     "    hourglass: {xi: 1}\n    rotate: {degrees: 90, about: [0, 0]}",
+     "bodies[2] (plate).rotate: turns a particle out of the domain"},
 };
 
 const SceneCase kBoundaries[] = {

@@ -136,6 +136,15 @@ const SceneCase kVariables[] = {
     {"variable_unknown_in_expression", kFluid, "velocity: [\"speed\", \"0\"]",
      "velocity: [\"sped\", \"0\"]",
      "bodies[1] (water).initial.velocity[0]: invalid expression 'sped'"},
+    // Number keys may be expressions of the variables (no x, y, z, t).
+    {"number_expression_unknown_name", kFluid, "dp: 0.01", "dp: \"0.1*sped\"",
+     "dp: expected a number, got '0.1*sped' (as an expression"},
+    {"number_expression_with_x", kFluid, "end_time: 1.0e-5", "end_time: \"1e-5*(1+x)\"",
+     "end_time: expected a number, got '1e-5*(1+x)'"},
+    {"number_expression_unbalanced", kFluid, "max: [0.2, 0.15]", "max: [\"0.2*(1\", 0.15]",
+     "bodies[1] (water).shape.box.max[0]: expected a number, got '0.2*(1'"},
+    {"number_expression_not_finite", kFluid, "dp: 0.01", "dp: \"speed/0\"",
+     "dp: expected a finite number, got 'speed/0'"},
 };
 
 const SceneCase kTimeStep[] = {

@@ -1,4 +1,5 @@
 // Scene `variables`: named numbers every expression can use, changed by --set and study --vary.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -99,6 +100,85 @@ TEST(SceneVariables, ReservedNamesAndNonNumbersAreRejected) {
   EXPECT_NE(message(kScene, {"variables.speed=fast"})
                 .find("variables.speed: expected a number, got 'fast'"),
             std::string::npos);
+}
+
+// Number keys (shapes, dp, end_time...) given as expressions of the variables.
+const std::string kNumbers = R"yaml(
+name: numbers
+dimension: 2
+dp: "0.05*2"
+domain: {min: [0, 0], max: [1, 1]}
+variables: {seed: 0, w: 0.4, speed: 2}
+materials:
+  water: {density: 1000, sound_speed: 10}
+bodies:
+  - name: block
+    phase: fluid
+    material: water
+    shape: {box: {min: [0.2, 0.2], max: [0.2+w, "0.6"]}}
+  - name: drop
+    phase: fluid
+    material: water
+    shape: {circle: {center: ["0.5 + 0.1*(uniform(seed, 1) - 0.5)", 0.85], radius: 0.1}}
+end_time: "0.01*speed"
+)yaml";
+
+TEST(SceneVariables, NumberKeysMayBeExpressionsOfThem) {
+  Scene s = load_scene_text(kNumbers);
+  EXPECT_DOUBLE_EQ(s.dp, 0.1);
+  EXPECT_DOUBLE_EQ(s.bodies[0].shape.b[0], 0.6);
+  EXPECT_DOUBLE_EQ(s.bodies[0].shape.b[1], 0.6);
+  EXPECT_DOUBLE_EQ(s.end_time, 0.02);
+  EXPECT_DOUBLE_EQ(s.bodies[1].shape.center[0], 0.5 + 0.1 * (seeded_uniform(0, 1) - 0.5));
+  Scene t = load_scene_text(kNumbers, {"variables.w=0.3", "variables.speed=3"});
+  EXPECT_DOUBLE_EQ(t.bodies[0].shape.b[0], 0.5);
+  EXPECT_DOUBLE_EQ(t.end_time, 0.03);
+}
+
+TEST(SceneVariables, ASeedVariableChangesASeededKeyReproducibly) {
+  auto centre = [](int seed) {
+    return load_scene_text(kNumbers, {fmt::format("variables.seed={}", seed)})
+        .bodies[1]
+        .shape.center[0];
+  };
+  EXPECT_EQ(centre(3), centre(3));
+  EXPECT_NE(centre(3), centre(4));
+  EXPECT_EQ(centre(3), 0.5 + 0.1 * (seeded_uniform(3, 1) - 0.5));
+}
+
+TEST(SceneVariables, ABadNumberExpressionIsAOneLineErrorNamingTheKey) {
+  auto edit = [](const std::string& from, const std::string& to) {
+    std::string text = kNumbers;
+    text.replace(text.find(from), from.size(), to);
+    return message(text);
+  };
+  const std::string xyz = edit("\"0.01*speed\"", "\"0.01*(1+x)\"");
+  EXPECT_NE(xyz.find("end_time: expected a number, got '0.01*(1+x)'"), std::string::npos) << xyz;
+  EXPECT_NE(xyz.find("x, y, z and t have no value in a number key"), std::string::npos) << xyz;
+  const std::string typo = edit("0.2+w", "0.2+ww");
+  EXPECT_NE(typo.find("bodies[0] (block).shape.box.max[0]: expected a number, got '0.2+ww'"),
+            std::string::npos)
+      << typo;
+  EXPECT_NE(typo.find("did you mean 'w'?"), std::string::npos) << typo;
+  const std::string open = edit("\"0.01*speed\"", "\"0.01*(speed\"");
+  EXPECT_NE(open.find("end_time: expected a number, got '0.01*(speed' (as an expression"),
+            std::string::npos)
+      << open;
+  // A word that is no number stays the error it was (with a hint when near a variable).
+  EXPECT_NE(edit("\"0.01*speed\"", "speeed")
+                .find("end_time: expected a number, got 'speeed' (did "
+                      "you mean 'speed'?)"),
+            std::string::npos);
+  EXPECT_NE(edit("\"0.01*speed\"", "\"1/0\"").find("end_time: expected a finite number"),
+            std::string::npos);
+  EXPECT_NE(edit("\"0.01*speed\"", "\"-speed\"")
+                .find("end_time: must be positive, got "
+                      "'-speed' = -2"),
+            std::string::npos);
+  // The variables themselves are plain numbers.
+  EXPECT_NE(edit("w: 0.4", "w: 2*2").find("variables.w: expected a number, got '2*2'"),
+            std::string::npos);
+  for (const std::string& m : {xyz, typo, open}) EXPECT_EQ(m.find('\n'), std::string::npos) << m;
 }
 
 }  // namespace

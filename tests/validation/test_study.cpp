@@ -96,6 +96,61 @@ TEST(Study, BadVaryFailsBeforeAnyRun) {
   EXPECT_EQ(c.code, 2) << c.output;
 }
 
+// Seeded runs (tests/scenes/seeded_block.yaml: start, lattice turn and speed from
+// uniform(seed, k)): three seeds at two speeds give two rows of statistics over three runs each,
+// and a seed run again gives the same value bit for bit.
+TEST(Study, RepeatedSeedsGiveStatisticsPerCombinationAndAreReproducible) {
+  const std::string out = out_dir("study_repeat");
+  const std::string scene = source("tests/scenes/seeded_block.yaml");
+  auto r = run_monosph("study " + scene +
+                       " --vary variables.seed=1,2,3 --vary variables.speed=1,2 --repeat "
+                       "variables.seed --jobs 2 --out " +
+                       out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(read_text_csv(out + "/study.csv").rows.size(), 6u);
+  auto t = read_text_csv(out + "/study_stats.csv");
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.head.front(), "variables.speed");
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(t.at(k, "variables.speed"), k == 0 ? "1" : "2");
+    EXPECT_EQ(t.num(k, "n"), 3);
+    EXPECT_EQ(t.num(k, "failed"), 0);
+    EXPECT_GT(t.num(k, "ke_std"), 0);  // the seed changes the speed
+    EXPECT_LT(t.num(k, "ke_ci95_low"), t.num(k, "ke_mean"));
+    EXPECT_GT(t.num(k, "ke_ci95_high"), t.num(k, "ke_mean"));
+    EXPECT_EQ(t.num(k, "ke_zero"), 0);
+  }
+  // The mean of speed 1 is the mean of its three runs' values.
+  double sum = 0;
+  for (const char* d :
+       {"/run00_variables.seed-1_variables.speed-1", "/run01_variables.seed-2_variables.speed-1",
+        "/run02_variables.seed-3_variables.speed-1"})
+    sum += summary(out + d)["metrics"]["ke"]["value"].get<double>();
+  EXPECT_NEAR(t.num(0, "ke_mean"), sum / 3, 1e-8 * sum);
+  std::ifstream md(out + "/study.md");
+  std::stringstream text;
+  text << md.rdbuf();
+  EXPECT_NE(text.str().find("## Statistics over variables.seed"), std::string::npos);
+  // Seed 2 at speed 1 again: the same kinetic energy, bit for bit.
+  const std::string again = out_dir("study_repeat_again");
+  auto a = run_monosph("run " + scene +
+                       " --set variables.seed=2 --set variables.speed=1 --quiet --out " + again);
+  ASSERT_EQ(a.code, 0) << a.output;
+  EXPECT_EQ(summary(again)["metrics"]["ke"]["value"].get<double>(),
+            summary(out + "/run01_variables.seed-2_variables.speed-1")["metrics"]["ke"]["value"]
+                .get<double>());
+}
+
+TEST(Study, RepeatMustNameAVariedKey) {
+  const std::string out = out_dir("study_repeat_bad");
+  auto r = run_monosph("study " + source("tests/scenes/seeded_block.yaml") +
+                       " --vary variables.speed=1,2 --repeat variables.seed --out " + out);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--repeat variables.seed is not one of the --vary keys"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(Study, WithoutGnuplotSaysSoAndKeepsTheCsv) {
   const std::string out = out_dir("study_nognuplot");
   auto r = run_command("PATH=/nonexistent " + std::string(MONOSPH_BIN) + " study " +
