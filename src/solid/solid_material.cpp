@@ -97,7 +97,7 @@ void read_damage(MapReader& r, JohnsonCookDamage& d) {
   d.d5 = q.number("D5", d.d5);
   d.min_failure_strain = q.positive("min_failure_strain", d.min_failure_strain);
   // Opt-in regularisation with a physical length (docs/theory.md, "Non-local damage").
-  if (q.has("nonlocal_length")) d.nonlocal_length = q.positive("nonlocal_length");
+  d.nonlocal_length = q.non_negative("nonlocal_length", d.nonlocal_length);  // 0: local
   q.finish();
 }
 

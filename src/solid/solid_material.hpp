@@ -21,7 +21,7 @@ struct JohnsonCookDamage {
   double min_failure_strain = 1e-6;  // floor of eps_f (as LS-DYNA's EFMIN): D1 < 0 fits give
                                      // eps_f <= 0 at high triaxiality
   // Non-local damage (solid/nonlocal_damage.hpp): the length l [m] over which damage increments
-  // are averaged; 0 = local (MMB).
+  // are averaged; 0 (default) = local (MMB).
   double nonlocal_length = 0;
 };
 

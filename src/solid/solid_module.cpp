@@ -212,7 +212,9 @@ void SolidModule<D>::plastic_return(Simulation<D>& sim, double dt) {
     if (kdmg_ < 0) continue;
     dmg[i] = pt.D;
     fail[i] += pt.released * m[i] / rho[i];
-    if (nonlocal) dmg_inc_[i] = pt.dD;
+    // At most what the point has left to fail: the floored failure strain (min_failure_strain)
+    // gives increments of 1e4 and more in tension, which no average may spread.
+    if (nonlocal) dmg_inc_[i] = std::min(pt.dD, 1 - pt.D);
   }
   if (any_nonlocal_) nonlocal_damage(sim);
 }

@@ -94,6 +94,7 @@ TEST(NonlocalDamage, KeyNeedsALengthAboveDpAndOneRank) {
     return t;
   };
   EXPECT_NE(test::load_error(scene("-1e-3")).find("nonlocal_length"), std::string::npos);
+  EXPECT_NO_THROW(test::build<2>(scene("0")));  // 0: local
   EXPECT_NE(test::load_error(scene("abc")).find("nonlocal_length"), std::string::npos);
   try {
     test::build<2>(scene("1e-3"));
