@@ -116,6 +116,18 @@ TEST(Interrupts, RestartAfterAStopAtAnyStepEqualsUninterruptedRunWithAFluid) {
       {29, 187, 402});
 }
 
+TEST(Interrupts, RestartAfterAStopAtAnyStepEqualsUninterruptedRunWithErosion) {
+  // The erosion map at 300 m/s to 1.2 us (1913 steps; 50 particles removed from 0.1 to 1.0 us).
+  // Before issue 51 a restart began its removed_mass at 0: after a stop at step 900 the probe
+  // ended at 1.96e-6 kg/m instead of 1.4e-5.
+  expect_restart_after_steps_equals_full_run(
+      "stop_erosion",
+      "run " + source("cases/erosion_map/scene.yaml") +
+          " --threads 1 --quiet --set variables.speed=300 end_time=1.2e-6 output.every=1"
+          " output.checkpoint_every=6e-7",
+      {900});
+}
+
 TEST(Interrupts, RestartAfterSigintEqualsUninterruptedRunWithASolid) {
   // The case of issue 50: SIGINT at whatever step the plate has reached once checkpoint.h5 (every
   // 2 ms, 87 steps) exists; its checkpoint.h5 then holds that step. 4340 steps in all.
