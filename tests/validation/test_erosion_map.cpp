@@ -152,6 +152,71 @@ TEST(ErosionMap, ASeededImpactIsReproducibleAndMovesTheGrain) {
   EXPECT_LE(std::abs(t3["grain_centre_x"].front()), 5e-6 + 1e-6);  // within dp/2 (+ the turn)
 }
 
+// Removal per impact over seeded impacts with non-local damage (issue 51; l = 20 um, the
+// scene's variable `nonlocal`; docs/studies/erosion_convergence): 30 and 90 deg at 150 and 300
+// m/s, seeds 1-4 at dp = 10 um (16 runs of about 7 s on one thread). Mean per cell and speed
+// exponent from study_stats.csv. Measured with 8 seeds: 3.36e-6 / 4.37e-6 kg/m at 150 m/s and
+// 3.27e-5 / 2.14e-5 at 300 m/s (30 / 90 deg), exponent of the angle sum 2.81 (2.71 with seeds
+// 1-4). Local damage removes 1.34e-5 at 30 deg, 300 m/s, with an interval of +-59 %; non-local
+// +-10 %.
+struct SeededCells {
+  std::map<std::pair<int, int>, double> mean;
+  double zeros = 0, failed = 0, n = 0;
+};
+
+SeededCells seeded_study(const std::string& out) {
+  auto r = run_monosph("study " + source("cases/erosion_map/scene.yaml") +
+                       " --vary variables.angle=30,90 --vary variables.speed=150,300"
+                       " --vary variables.seed=1,2,3,4 --repeat variables.seed --jobs 1"
+                       " --threads 1 --out " +
+                       out + " --set variables.nonlocal=2e-5 output.every=0");
+  EXPECT_EQ(r.code, 0) << r.output;
+  auto t = read_csv(out + "/study_stats.csv");
+  SeededCells c;
+  for (std::size_t k = 0; k < t["n"].size(); ++k) {
+    c.mean[{int(t["variables.angle"][k]), int(t["variables.speed"][k])}] =
+        t["removed_mass_mean"][k];
+    c.zeros += t["removed_mass_zero"][k], c.failed += t["failed"][k], c.n += t["n"][k];
+  }
+  return c;
+}
+
+TEST(ErosionMap, NonLocalDamageOverSeededImpactsScalesAsTheLiteratureAndIsReproducible) {
+  const std::string out = out_dir("erosion_seeded_nonlocal");
+  const SeededCells c = seeded_study(out);
+  ASSERT_EQ(c.mean.size(), 4u);
+  EXPECT_EQ(c.n, 16);
+  EXPECT_EQ(c.failed, 0);
+  EXPECT_EQ(c.zeros, 0);  // every impact removes something
+  // Maximum at the shallow angle at 300 m/s.
+  EXPECT_GT(c.mean.at({30, 300}), c.mean.at({90, 300}));
+  // Speed exponent of the angle sum in [2, 3] (Finnie 1960; Hutchings 1981).
+  const double n = exponent({{150, c.mean.at({30, 150}) + c.mean.at({90, 150})},
+                             {300, c.mean.at({30, 300}) + c.mean.at({90, 300})}});
+  EXPECT_GE(n, 2.0);
+  EXPECT_LE(n, 3.0);
+  RecordProperty("speed_exponent", std::to_string(n));
+  // A seeded cell is reproducible: seed 2 at 30 deg, 300 m/s run again alone.
+  const std::string again = out_dir("erosion_seeded_nonlocal_again");
+  auto r = run_monosph("run " + source("cases/erosion_map/scene.yaml") +
+                       " --set variables.seed=2 variables.angle=30 variables.speed=300"
+                       " variables.nonlocal=2e-5 output.every=0 --threads 1 --quiet --out " +
+                       again);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string run = out + "/run06_variables.angle-30_variables.speed-300_variables.seed-2";
+  EXPECT_EQ(summary(again)["metrics"]["removed_mass"]["value"].get<double>(),
+            summary(run)["metrics"]["removed_mass"]["value"].get<double>());
+}
+
+// The ductile shape with non-local damage (issue 51's goal, NOT MET at dp, hence disabled):
+// normal impact at most half the maximum and the maximum at 30 deg at both speeds. Measured
+// (8 seeds, dp = 10 um): normal/30 deg 1.30 at 150 m/s and 0.66 at 300 m/s (local: 0.68, 0.39).
+TEST(ErosionMap, DISABLED_NonLocalDamageOverSeededImpactsHasTheDuctileShape) {
+  const SeededCells c = seeded_study(out_dir("erosion_seeded_nonlocal_shape"));
+  ASSERT_EQ(c.mean.size(), 4u);
+  for (int v : {150, 300}) EXPECT_LE(c.mean.at({90, v}), 0.5 * c.mean.at({30, v})) << v << " m/s";
+}
+
 // The literature's whole shape over the map, 15-90 deg and 100-300 m/s (20 runs, about 7 min on
 // one thread). NOT MET, hence disabled (docs/studies/erosion_map/README.md). With friction 0.3:
 //  - speed exponent of the angle sum (least squares, 100-300 m/s) in [2, 3]: met, 2.70 at
