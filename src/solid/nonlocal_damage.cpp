@@ -7,15 +7,30 @@ namespace monosph {
 
 template <int D>
 void NonlocalAverage<D>::bin(Simulation<D>& sim, std::span<const double> length, double cell) {
+  // Cells at least l wide on the domain's grid, over the box of the averaged particles (whole
+  // periodic axes); at most about 8 cells per particle (wider cells: the same sums, slower).
   const auto& dom = sim.neighbours().domain();
   const auto x = sim.particles().x();
   const std::size_t n = sim.owned();
-  lo_ = dom.lo;
-  std::size_t total = 1;
-  for (int a = 0; a < D; ++a) {
-    nc_[a] = std::max(1, int(std::floor(dom.length()[a] / cell)));  // cells at least l wide
-    size_[a] = dom.length()[a] / nc_[a];
-    total *= std::size_t(nc_[a]);
+  Vec<D> lo = dom.hi, hi = dom.lo;
+  std::size_t members = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (length[i] > 0) lo = lo.cwiseMin(x[i]), hi = hi.cwiseMax(x[i]), ++members;
+  std::size_t total = 0;
+  for (double c = cell; total == 0 || total > 8 * members + 1024; c *= 2) {
+    total = 1;
+    for (int a = 0; a < D; ++a) {
+      const int all = std::max(1, int(std::floor(dom.length()[a] / c)));
+      size_[a] = dom.length()[a] / all;
+      int k0 = 0, k1 = all - 1;
+      if (!dom.periodic[a]) {
+        k0 = std::clamp(int(std::floor((lo[a] - dom.lo[a]) / size_[a])), 0, all - 1);
+        k1 = std::clamp(int(std::floor((hi[a] - dom.lo[a]) / size_[a])), k0, all - 1);
+      }
+      lo_[a] = dom.lo[a] + k0 * size_[a];
+      nc_[a] = k1 - k0 + 1;
+      total *= std::size_t(nc_[a]);
+    }
   }
   start_.assign(total + 1, 0);
   cell_of_.assign(n, -1);

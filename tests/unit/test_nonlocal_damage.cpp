@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/simulation.hpp"
 #include "sim_helpers.hpp"
 #include "solid/nonlocal_damage.hpp"
 #include "solid/plasticity.hpp"
@@ -30,8 +31,6 @@ struct Increments {
   std::vector<double> length, inc, out;
 };
 
-}  // namespace
-
 TEST(NonlocalDamage, ConstantIncrementsAverageToThemselves) {
   auto sim = test::build<2>(two_boxes(1e-3));
   const std::size_t n = sim->owned();
@@ -42,46 +41,71 @@ TEST(NonlocalDamage, ConstantIncrementsAverageToThemselves) {
   for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(f.out[i], 0.25, 1e-14) << i;
 }
 
-TEST(NonlocalDamage, OneIncrementSpreadsWithTheBellWeightWithinItsBodyAcrossThePeriod) {
-  auto sim = test::build<2>(two_boxes(1e-3));
-  const std::size_t n = sim->owned();
-  auto x = sim->particles().x();
-  auto bd = sim->particles().body();
-  // The increment sits on a particle of body a at the periodic edge x = dp/2.
-  std::size_t src = n;
-  for (std::size_t i = 0; i < n; ++i)
-    if (bd[i] == 0 && std::abs(x[i][0] - 5e-4) < 1e-9 && std::abs(x[i][1] - 5e-4) < 1e-9) src = i;
-  ASSERT_LT(src, n);
-  const double l = 3.5e-3;
+// Averages a unit increment on particle `src` (length l everywhere) and compares every result
+// with sum_j w V_j inc_j / sum_j w V_j summed over all particles of the body (minimum image
+// along x when `period` > 0). Returns how many particles beyond x = far received some.
+int expect_bell_average(Simulation<2>& sim, std::size_t src, double l, double period, double far) {
+  const std::size_t n = sim.owned();
+  auto x = sim.particles().x();
+  auto bd = sim.particles().body();
+  auto m = sim.particles().m();
+  auto rho = sim.particles().rho();
   Increments f{std::vector<double>(n, l), std::vector<double>(n, 0.0), {}};
   f.inc[src] = 1.0;
   NonlocalAverage<2> avg;
-  avg.average(*sim, f.length, f.inc, f.out);
-  auto m = sim->particles().m();
-  auto rho = sim->particles().rho();
-  int reached_across = 0;
+  avg.average(sim, f.length, f.inc, f.out);
+  auto r2 = [&](std::size_t i, std::size_t j) {
+    double dx = x[j][0] - x[i][0];
+    if (period > 0) dx -= period * std::rint(dx / period);
+    const double dy = x[j][1] - x[i][1];
+    return dx * dx + dy * dy;
+  };
+  int reached = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    double dx = x[src][0] - x[i][0];
-    dx -= 0.04 * std::rint(dx / 0.04);  // minimum image along the periodic x
-    const double dy = x[src][1] - x[i][1];
-    const double w = bell_weight(dx * dx + dy * dy, l * l);
-    if (bd[i] != 0 || w == 0) {
+    const double w = bell_weight(r2(src, i), l * l);
+    if (bd[i] != bd[src] || w == 0) {
       EXPECT_EQ(f.out[i], 0.0) << i;  // the other body, or beyond l
       continue;
     }
-    // out_i = w_i,src V / sum_j w_ij V_j over i's neighbours within l.
     double den = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (bd[j] != 0) continue;
-      double ex = x[j][0] - x[i][0];
-      ex -= 0.04 * std::rint(ex / 0.04);
-      const double ey = x[j][1] - x[i][1];
-      den += bell_weight(ex * ex + ey * ey, l * l) * m[j] / rho[j];
-    }
+    for (std::size_t j = 0; j < n; ++j)
+      if (bd[j] == bd[i]) den += bell_weight(r2(i, j), l * l) * m[j] / rho[j];
     EXPECT_NEAR(f.out[i], w * m[src] / rho[src] / den, 1e-12) << i;
-    reached_across += x[i][0] > 0.03;
+    reached += x[i][0] > far;
   }
-  EXPECT_GT(reached_across, 5);  // through the periodic boundary
+  return reached;
+}
+
+std::size_t particle_at(Simulation<2>& sim, int body, double x0, double y0) {
+  auto x = sim.particles().x();
+  auto bd = sim.particles().body();
+  for (std::size_t i = 0; i < sim.owned(); ++i)
+    if (bd[i] == body && std::abs(x[i][0] - x0) < 1e-9 && std::abs(x[i][1] - y0) < 1e-9) return i;
+  return sim.owned();
+}
+
+}  // namespace
+
+TEST(NonlocalDamage, OneIncrementSpreadsWithTheBellWeightWithinItsBodyAcrossThePeriod) {
+  auto sim = test::build<2>(two_boxes(1e-3));
+  // The increment sits on a particle of body a at the periodic edge x = dp/2.
+  const std::size_t src = particle_at(*sim, 0, 5e-4, 5e-4);
+  ASSERT_LT(src, sim->owned());
+  EXPECT_GT(expect_bell_average(*sim, src, 3.5e-3, 0.04, 0.03), 5);  // through the period
+}
+
+TEST(NonlocalDamage, ADomainOfManyCellsPerParticleUsesWiderCells) {
+  // Two 1 cm boxes 100 m apart: cells of l would be 3e4 per particle; the average is the same.
+  auto sim = test::build<2>(
+      "name: t\ndimension: 2\ndp: 0.001\ndomain: {min: [0, 0], max: [100, 0.01]}\n"
+      "materials: {m: {density: 1000, bulk_modulus: 1e9, shear_modulus: 1e8}}\n"
+      "bodies:\n"
+      "  - {name: a, phase: solid, material: m, shape: {box: {min: [0, 0], max: [0.01, 0.01]}}}\n"
+      "  - {name: b, phase: solid, material: m, shape: {box: {min: [99.99, 0], max: [100, "
+      "0.01]}}}\nend_time: 1e-6\n");
+  const std::size_t src = particle_at(*sim, 1, 99.9955, 5.5e-3);
+  ASSERT_LT(src, sim->owned());
+  EXPECT_GT(expect_bell_average(*sim, src, 3.5e-3, 0, 99.99), 10);
 }
 
 TEST(NonlocalDamage, KeyNeedsALengthAboveDpAndOneRank) {
