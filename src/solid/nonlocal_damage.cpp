@@ -60,9 +60,16 @@ void NonlocalAverage<D>::average(Simulation<D>& sim, std::span<const double> len
   for (std::size_t i = 0; i < n; ++i) lmax = std::max(lmax, length[i]);
   if (lmax <= 0) return;
   bin(sim, length, lmax);
-  active_.assign(start_.size() - 1, 0);
+  // The particles with an increment, by cell (a subsequence of items_: the same order of sums).
+  const std::size_t cells = start_.size() - 1;
+  act_start_.assign(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i)
-    if (cell_of_[i] >= 0 && inc[i] > 0) active_[cell_of_[i]] = 1;
+    if (cell_of_[i] >= 0 && inc[i] > 0) ++act_start_[cell_of_[i] + 1];
+  for (std::size_t c = 0; c < cells; ++c) act_start_[c + 1] += act_start_[c];
+  act_items_.resize(act_start_[cells]);
+  for (std::size_t c = 0, q = 0; c < cells; ++c)
+    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k)
+      if (inc[items_[k]] > 0) act_items_[q++] = items_[k];
   auto& p = sim.particles();
   const auto x = p.x();
   const auto bd = p.body();
@@ -93,23 +100,25 @@ void NonlocalAverage<D>::average(Simulation<D>& sim, std::span<const double> len
       if (!inside || std::find(near.begin(), near.begin() + count, c) != near.begin() + count)
         continue;
       near[count++] = c;
-      any = any || active_[c];
+      any = any || act_start_[c + 1] > act_start_[c];
     }
     if (!any) continue;
     const double l2 = length[i] * length[i];
+    auto weight = [&](int j) {  // w(r_ij) V_j, minimum image along periodic axes
+      Vec<D> d = x[j] - x[i];
+      for (int a = 0; a < D; ++a)
+        if (dom.periodic[a]) d[a] -= len[a] * std::rint(d[a] / len[a]);
+      return bell_weight(d.squaredNorm(), l2) * m[j] / rho[j];
+    };
     double num = 0, den = 0;
+    for (int q = 0; q < count; ++q)  // the particles with an increment first
+      for (std::size_t k = act_start_[near[q]]; k < act_start_[near[q] + 1]; ++k)
+        if (bd[act_items_[k]] == bd[i]) num += weight(act_items_[k]) * inc[act_items_[k]];
+    if (num == 0) continue;  // none within l: no need of the normalisation
     for (int q = 0; q < count; ++q)
-      for (std::size_t k = start_[near[q]]; k < start_[near[q] + 1]; ++k) {
-        const int j = items_[k];
-        if (bd[j] != bd[i]) continue;
-        Vec<D> d = x[j] - x[i];
-        for (int a = 0; a < D; ++a)
-          if (dom.periodic[a]) d[a] -= len[a] * std::rint(d[a] / len[a]);
-        const double w = bell_weight(d.squaredNorm(), l2) * m[j] / rho[j];
-        num += w * inc[j];
-        den += w;
-      }
-    out[i] = den > 0 ? num / den : 0.0;
+      for (std::size_t k = start_[near[q]]; k < start_[near[q] + 1]; ++k)
+        if (bd[items_[k]] == bd[i]) den += weight(items_[k]);
+    out[i] = num / den;
   }
 }
 
