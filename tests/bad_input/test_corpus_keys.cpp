@@ -230,6 +230,13 @@ const SceneCase kMaterials[] = {
      "shear_modulus: 8.0e10, plasticity: {A: 3e8}, damage: {D1: 0.1, D2: 1, D3: -1, "
      "min_failure_strain: 0}}",
      "materials.steel.damage.min_failure_strain: must be positive"},
+    // Non-local damage (issue 51): a length, more than one dp (kGrains: dp = 1 mm).
+    {"damage_nonlocal_negative", kGrains, "al: {preset: Al6061-T6}",
+     "al: {preset: Al6061-T6, damage: {nonlocal_length: -1e-3}}",
+     "materials.al.damage.nonlocal_length: must not be negative"},
+    {"damage_nonlocal_below_dp", kGrains, "al: {preset: Al6061-T6}",
+     "al: {preset: Al6061-T6, damage: {nonlocal_length: 5e-4}}",
+     "materials.al.damage.nonlocal_length: must exceed the particle spacing dp"},
     {"preset_plasticity_unknown_key", kGrains, "al: {preset: Al6061-T6}",
      "al: {preset: Al6061-T6, plasticity: {A: 3e8, Q: 1}}",
      "materials.al.plasticity.Q: unknown key"},
