@@ -87,6 +87,8 @@ script = """set terminal pngcairo size 1000,650
 set output '%s'
 set logscale xy
 set xrange [2:12] reverse
+set xtics (2.5, 5, 10)
+set format y '%%.0e'
 set xlabel 'particle spacing dp [um] (10, 20, 40 particles across the grain)'
 set ylabel 'removed mass per impact [kg/m]'
 set key outside right
