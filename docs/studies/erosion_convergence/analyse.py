@@ -50,8 +50,11 @@ for c in cells:
         extra += ", intervals overlap" if lo1 <= hi2 and lo2 <= hi1 else ", intervals apart"
     if len(ms) == 3 and (ms[0] - ms[1]) * (ms[1] - ms[2]) > 0:
         p = math.log(abs((ms[0] - ms[1]) / (ms[1] - ms[2]))) / math.log(2)
-        inf = ms[2] + (ms[2] - ms[1]) / (2 ** p - 1)
-        extra += "; observed order %.2f, extrapolated %.3g" % (p, inf)
+        if p > 0:
+            inf = ms[2] + (ms[2] - ms[1]) / (2 ** p - 1)
+            extra += "; observed order %.2f, extrapolated %.3g" % (p, inf)
+        else:
+            extra += "; the changes grow (order %.2f): no extrapolation" % p
     elif len(ms) == 3:
         extra += "; not monotone: no order"
     print("%d deg %d m/s %s: %s%s" % (c[0], c[1], c[2], text, extra))
