@@ -9,7 +9,7 @@ import csv, glob, math, os, subprocess, sys
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
 DP = {"dp10": 10e-6, "dp5": 5e-6, "dp2.5": 2.5e-6}
 rows = []
-for f in sorted(glob.glob(os.path.join(here, "*_stats.csv"))):
+for f in sorted(glob.glob(os.path.join(here, "dp*_stats.csv"))):
     name = os.path.basename(f)[: -len("_stats.csv")]
     dp = DP[name.split("_")[0]]
     for r in csv.DictReader(open(f)):
