@@ -30,9 +30,9 @@ class NonlocalAverage {
 
  private:
   void bin(Simulation<D>& sim, std::span<const double> length, double cell);
-  std::array<int, D> nc_{};             // cells per axis
-  Vec<D> size_, lo_;                    // cell size, origin of the first cell
-  std::vector<std::size_t> start_;      // first item of each cell
+  std::array<int, D> nc_{};                // cells per axis
+  Vec<D> size_, lo_;                       // cell size, origin of the first cell
+  std::vector<std::size_t> start_, fill_;  // first item of each cell
   std::vector<int> items_, cell_of_;    // particles by cell; the cell of each particle (-1: none)
   std::vector<std::size_t> act_start_;  // per cell, its particles with a positive increment
   std::vector<int> act_items_;
