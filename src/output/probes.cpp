@@ -383,6 +383,19 @@ std::vector<double> Probes<D>::sample(Simulation<D>& sim) {
       for (std::size_t i = 0; i < n && kf >= 0; ++i)
         if (in_body(i)) e += p.template view<double>(kf)[i];
       out.push_back(comm.sum(e) + sim.removed(s.type, it->body));
+    } else if (s.type == "kinetic_share") {
+      // Kinetic energy over plastic work (eroded particles' included), e.g. to check that mass
+      // scaling keeps a cut quasi-static; 0 before any plastic work.
+      const int kw = p.find("plastic_work");
+      double e = 0, w = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in_body(i)) continue;
+        e += 0.5 * m[i] * v[i].squaredNorm();
+        if (kw >= 0) w += p.template view<double>(kw)[i];
+      }
+      w = comm.sum(w) + sim.removed("plastic_work", it->body);
+      e = comm.sum(e);
+      out.push_back(w > 0 ? e / w : 0.0);
     } else if (s.type == "contact_energy") {
       out.push_back(comm.sum(contact_energy()));
     } else if (s.type == "kinetic_energy") {
@@ -486,6 +499,12 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
   if (measure == "min") return *std::min_element(yy.begin(), yy.end());
   const double mean = std::accumulate(yy.begin(), yy.end(), 0.0) / yy.size();
   if (measure == "mean") return mean;
+  if (measure == "std") {  // sample standard deviation over the window
+    if (yy.size() < 2) return none("fewer than two probe samples");
+    double ss = 0;
+    for (double y : yy) ss += (y - mean) * (y - mean);
+    return std::sqrt(ss / static_cast<double>(yy.size() - 1));
+  }
   if (measure == "drift") {  // largest relative change from the first sample
     double d = 0;
     for (double y : yy) d = std::max(d, std::abs(y - yy[0]));

@@ -18,6 +18,15 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
     s.name = spec.name;
     s.geometry = SurfaceGeometry<D>(surface_elements<D>(spec, where));
     s.friction = spec.friction;
+    const double inf = std::numeric_limits<double>::infinity();
+    s.friction_cap = spec.friction_limit > 0 ? spec.friction_limit * std::pow(scene.dp, D - 1) : inf;
+    s.heat_partition = spec.heat_partition;
+    if (s.friction > 0 && s.heat_partition < 1 && kq_ < 0) {
+      auto& p = sim.particles();
+      kT_ = p.add_field("temperature", 1, FieldType::Real, true);  // the solid module's
+      kq_ = p.add_field("friction_heating", 1, FieldType::Real, true);
+      p.set_meaning({kT_, kq_}, phase_bit(kSolid) | phase_bit(kFluid));
+    }
     s.damping = spec.damping;
     for (int a = 0; a < D; ++a) {
       s.velocity_expr.emplace_back(spec.velocity_expr[a], where + ".velocity", scene.variables);
@@ -85,6 +94,14 @@ void RigidSurfaceModule<D>::drift(Simulation<D>& sim, double dt) {
     }
   }
   t_ = t + dt;
+  if (kq_ < 0) return;
+  // Friction heat of the last force pass, explicit as conduction (src/heat).
+  auto& p = sim.particles();
+  auto T = p.template view<double>(kT_);
+  auto q = p.template view<double>(kq_);
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) T[i] += dt * q[i];
 }
 
 template <int D>
@@ -109,14 +126,18 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
     s.force.resize(n);
     for (std::size_t k = 0; k < e_max.size(); ++k) e_max[k] = std::max(e_max[k], s.e_star[k]);
   }
+  std::span<double> q;
+  if (kq_ >= 0) q = p.template view<double>(kq_);
   double w2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : w2)
   for (std::size_t i = 0; i < n; ++i) {
     if (ph[i] != kSolid && ph[i] != kFluid) {
       for (int k = 0; k < ns; ++k) s_[k].force[i].setZero();
+      if (kq_ >= 0) q[i] = 0;
       continue;
     }
     double delta_max = delta_floor;
+    double heating = 0;  // friction power into the particle, W (per metre of depth in 2D)
     Vec<D> sum = Vec<D>::Zero();
     for (int k = 0; k < ns; ++k) {
       Surface& s = s_[k];
@@ -127,12 +148,19 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
       Vec<D> c;
       int e;
       if (!s.geometry.closest(xl, R, c, e)) continue;
+      double power = 0;
       f = contact_force<D>(xl, v[i], m[i], c, s.geometry.elements()[e].normal, s.velocity, R,
-                           s.e_star[mt[i]], s.friction, dt, depth, nullptr, s.damping);
+                           s.e_star[mt[i]], s.friction, dt, depth, nullptr, s.damping,
+                           s.friction_cap, &power);
+      heating += (1 - s.heat_partition) * power;
       delta_max = std::max(delta_max, R - (xl - c).norm());
       sum += f;
     }
     a[i] += sum / m[i];
+    if (kq_ >= 0) {  // dT/dt = (1 - beta) |F_t| |v_t| / (m C_p); no heat capacity: no heating
+      const double cp = sim.materials()[mt[i]].heat_capacity;
+      q[i] = cp > 0 ? heating / (m[i] * cp) : 0.0;
+    }
     if (i >= own) continue;  // ghost: its owner counts it
     // Contact frequency squared k/m with k = dF/d(delta) = 2 E* sqrt(R delta) (per depth in 2D).
     w2 = std::max(w2, hertz_stiffness(e_max[mt[i]], R, delta_max) / depth / m[i]);
@@ -192,14 +220,46 @@ std::vector<std::string> RigidSurfaceModule<D>::probe_columns(const ProbeSpec& s
     for (int a = 0; a < D; ++a) c.push_back(std::string("_") + "xyz"[a]);
     return c;
   }
-  if (spec.type == "surface_contacts") return {""};
+  if (spec.type == "surface_contacts" || spec.type == "chip_ratio") return {""};
   return {};
 }
 
 template <int D>
-void RigidSurfaceModule<D>::probe(Simulation<D>&, const ProbeSpec& spec, std::vector<double>& out) {
+double RigidSurfaceModule<D>::chip_ratio(Simulation<D>& sim, const ProbeSpec& spec) const {
+  // The chip's extent normal to the rake face within the window (scene/scene_probes.cpp,
+  // read_chip), over the ranks: thickness = max d - min d + dp.
   const Surface& s = s_[find(spec.body)];
-  if (spec.type == "surface_force")
+  auto& p = sim.particles();
+  auto x = p.x();
+  auto bd = p.body();
+  int body = -1;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b)
+    if (sim.bodies()[b].name == spec.target) body = static_cast<int>(b);
+  Vec<D> p0, axis, normal;
+  for (int a = 0; a < D; ++a)
+    p0[a] = spec.point[a], axis[a] = spec.axis[a], normal[a] = spec.normal[a];
+  p0 += s.displacement;
+  const double dp = sim.scene().dp;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < sim.owned(); ++i) {
+    if (bd[i] != body) continue;
+    const Vec<D> r = x[i] - p0;
+    const double along = r.dot(axis), d = r.dot(normal);
+    if (along < spec.range[0] || along > spec.range[1] || d < -dp || d > 5 * spec.size) continue;
+    lo = std::min(lo, d), hi = std::max(hi, d);
+  }
+  lo = sim.comm().min(lo), hi = sim.comm().max(hi);
+  return hi >= lo ? (hi - lo + dp) / spec.size : 0.0;
+}
+
+template <int D>
+void RigidSurfaceModule<D>::probe(Simulation<D>& sim, const ProbeSpec& spec,
+                                  std::vector<double>& out) {
+  const Surface& s = s_[find(spec.body)];
+  sync(sim.time());
+  if (spec.type == "chip_ratio")
+    out.push_back(chip_ratio(sim, spec));
+  else if (spec.type == "surface_force")
     for (int a = 0; a < D; ++a) out.push_back(s.reaction[a]);
   else if (spec.type == "surface_displacement")
     for (int a = 0; a < D; ++a) out.push_back(s.displacement[a]);

@@ -53,6 +53,8 @@ class RigidSurfaceModule : public Module<D> {
     bool constant = true;
     Vec<D> v0 = Vec<D>::Zero();  // the velocity when constant
     double friction = 0;
+    double friction_cap = 0;     // tau_max dp^(D-1): the largest friction force per particle
+    double heat_partition = 1;   // beta: the surface's share of the friction work
     double damping = 0;          // normal dashpot, ratio of critical
     std::vector<double> e_star;  // per material
     Vec<D> displacement = Vec<D>::Zero(), velocity = Vec<D>::Zero(), reaction = Vec<D>::Zero();
@@ -60,6 +62,7 @@ class RigidSurfaceModule : public Module<D> {
     std::vector<Vec<D>> force;  // per particle
   };
   Vec<D> velocity_at(const Surface& s, double t) const;
+  double chip_ratio(Simulation<D>& sim, const ProbeSpec& spec) const;  // probe chip_ratio
   void sync(double t);  // displacements at time t from t = 0 (a restart)
 
   std::vector<Surface> s_;
@@ -67,6 +70,10 @@ class RigidSurfaceModule : public Module<D> {
   double omega2_ = 0;  // largest contact frequency squared k/m (last force pass)
   double radius_ = 0;  // dp/2
   double depth_ = 1;   // 1 in 3D, dp in 2D
+  // Friction heating of the particles (some surface has heat_partition < 1): the fields
+  // `temperature` and `friction_heating` (dT/dt, K/s, from the last force pass; applied in drift
+  // as the heat module's conduction rate is). -1: none.
+  int kT_ = -1, kq_ = -1;
 };
 
 }  // namespace monosph

@@ -411,11 +411,13 @@ std::vector<SurfaceElement<D>> surface_elements(const SurfaceSpec& s, const std:
 template <int D>
 Vec<D> contact_force(const Vec<D>& x, const Vec<D>& v, double m, const Vec<D>& c,
                      const Vec<D>& normal, const Vec<D>& v_surface, double radius, double e_star,
-                     double friction, double dt, double depth, double* fn, double damping) {
+                     double friction, double dt, double depth, double* fn, double damping,
+                     double friction_cap, double* power) {
   const Vec<D> d = x - c;
   const double dist = d.norm();
   const double overlap = radius - dist;
   if (fn) *fn = 0;
+  if (power) *power = 0;
   if (!(overlap > 0)) return Vec<D>::Zero();
   // Direction from the closest point to the particle centre (not the face normal at edges and
   // vertices); the element normal only for a centre on the element.
@@ -432,9 +434,12 @@ Vec<D> contact_force(const Vec<D>& x, const Vec<D>& v, double m, const Vec<D>& c
     const Vec<D> vt = vr - vr.dot(n) * n;
     const double s = vt.norm();
     if (s > 0) {
-      double f_t = friction * f_n;  // Coulomb, regularised: never more than stops the sliding
+      // Coulomb up to the limiting shear force, regularised: never more than stops the sliding
+      double f_t = std::min(friction * f_n, friction_cap);
       if (dt > 0) f_t = std::min(f_t, m * s / dt);
       f -= (f_t / s) * vt;
+      // the mean sliding speed over the step the force stops (for the cap: all of m s^2 / 2)
+      if (power) *power = f_t * std::max(0.0, s - (dt > 0 ? 0.5 * f_t * dt / m : 0.0));
     }
   }
   return f;
@@ -465,9 +470,9 @@ template std::vector<SurfaceElement<2>> surface_elements<2>(const SurfaceSpec&, 
 template std::vector<SurfaceElement<3>> surface_elements<3>(const SurfaceSpec&, const std::string&);
 template Vec<2> contact_force<2>(const Vec<2>&, const Vec<2>&, double, const Vec<2>&, const Vec<2>&,
                                  const Vec<2>&, double, double, double, double, double, double*,
-                                 double);
+                                 double, double, double*);
 template Vec<3> contact_force<3>(const Vec<3>&, const Vec<3>&, double, const Vec<3>&, const Vec<3>&,
                                  const Vec<3>&, double, double, double, double, double, double*,
-                                 double);
+                                 double, double, double*);
 
 }  // namespace monosph

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 // Rigid surfaces (Mohseni-Mofidi & Bierwisch 2020, "MMB", Sect. 3, first paragraph): segments in
 // 2D and triangles in 3D, from primitives or STL files; closest points (Ericson 2005, Real-Time
 // Collision Detection, Sect. 5.1.2 and 5.1.5) and a bounding-volume tree to find the closest
@@ -92,11 +93,16 @@ double contact_modulus(double bulk, double shear, double e_s, double nu_s);
 // strain slab, whose mass m is per metre). Returns the force; `fn` the normal force magnitude.
 // `damping` (ratio of critical, default 0 = MMB's purely elastic Hertz contact) adds the normal
 // dashpot -2 damping sqrt(m k_n) v_n with k_n = dF_n/d(delta) = 1.5 F_n/delta (Tsuji et al. 1992
-// form); the normal force stays repulsive.
+// form); the normal force stays repulsive. `friction_cap` bounds |F_t| too: the limiting shear
+// stress tau_max times the particle's contact area dp^(D-1) (tau = min(mu sigma_n, tau_max),
+// Zorev's sticking-sliding law). `power`: the friction work rate |F_t| (|v_t| - |F_t| dt/(2m)),
+// the force times the mean sliding speed over a step it decelerates uniformly.
 template <int D>
 Vec<D> contact_force(const Vec<D>& x, const Vec<D>& v, double m, const Vec<D>& c,
                      const Vec<D>& normal, const Vec<D>& v_surface, double radius, double e_star,
                      double friction, double dt, double depth, double* fn = nullptr,
-                     double damping = 0);
+                     double damping = 0,
+                     double friction_cap = std::numeric_limits<double>::infinity(),
+                     double* power = nullptr);
 
 }  // namespace monosph

@@ -40,6 +40,10 @@ struct Material {
   double shear_modulus = 0;  // mu
   double heat_capacity = 0;  // C_p, J/(kg K); 0: no adiabatic heating (MMB Eq. 24)
   double viscosity = 0;      // dynamic viscosity mu (Pa s) of a fluid; nu = mu / rho0
+  // Mass scaling f (key mass_scaling, >= 1): density is f rho0 and heat_capacity C_p / f, so
+  // inertia grows f times (the time step sqrt(f)) while rho C_p, and with it every thermal
+  // result, stays the material's (docs/theory.md, "Mass scaling").
+  double mass_scaling = 1;
   // The temperature the material starts at unless a body gives one: 293.15 K, or the Johnson-Cook
   // reference temperature of a plastic material (set by the solid module).
   double reference_temperature = 293.15;
@@ -127,6 +131,8 @@ struct SurfaceSpec {
   std::vector<std::string> velocity_expr;  // prescribed velocity, expressions in t
   double friction = 0;                     // Coulomb coefficient mu_f
   double damping = 0;                      // normal dashpot, ratio of critical (0: elastic Hertz)
+  double friction_limit = 0;               // limiting shear stress tau_max, Pa (0: none)
+  double heat_partition = 1;               // share of the friction work the surface takes
   double stiffness = 0;                    // Young's modulus E_s; 0: rigid (E_s = infinity)
   double poisson_ratio = 0.3;              // nu_s (only with a stiffness)
 };
@@ -137,6 +143,7 @@ struct ProbeSpec {
   int component = -1;
   Point point;
   Point axis;              // diameter, profile: unit direction (of the axis through `point`)
+  Point normal;            // chip_ratio: the rake face's unit normal, into the chip
   int min_particles = 10;  // pieces: smaller clusters (spray, single particles) are not counted
   int bins = 0;            // profile: number of bins along `axis`
   Point range;             // profile: [lo, hi] along `axis` (empty: the default range)
@@ -146,7 +153,7 @@ struct ProbeSpec {
 };
 
 struct ReferenceSpec {
-  std::string name, probe, measure;  // measure: frequency | period | final | max | min | mean
+  std::string name, probe, measure;  // measure: frequency | period | final | max | min | mean | std
   double value = 0;                  // NaN: no reference value (the measure is reported, no error)
   double start = 0;                  // ignore probe samples before this time
   // Simulated time the measure needs (key needs_time). Default: a window measure (final, max,
@@ -156,7 +163,8 @@ struct ReferenceSpec {
   double needs_time(double scene_end_time) const {
     if (needs >= 0) return needs;
     const bool window =
-        measure == "final" || measure == "max" || measure == "min" || measure == "mean";
+        measure == "final" || measure == "max" || measure == "min" || measure == "mean" ||
+        measure == "std";
     return window ? scene_end_time : start;
   }
 };

@@ -28,11 +28,12 @@ void add_params(json& j, const ParamMap& params) {
 // The generic keys, then each module's.
 json material_json(const Material& m) {
   json j = {{"name", m.name},
-            {"density", m.density},
+            {"density", m.density / m.mass_scaling},  // the keys as given: read back, the same
             {"bulk_modulus", m.bulk_modulus},
             {"shear_modulus", m.shear_modulus},
-            {"heat_capacity", m.heat_capacity},
-            {"viscosity", m.viscosity}};
+            {"heat_capacity", m.heat_capacity * m.mass_scaling},
+            {"viscosity", m.viscosity},
+            {"mass_scaling", m.mass_scaling}};
   add_params(j, m.params);
   return j;
 }
@@ -81,6 +82,7 @@ json surface_json(const SurfaceSpec& s) {
           {"file", s.file},           {"scale", s.scale},
           {"translate", s.translate}, {"velocity", s.velocity_expr},
           {"friction", s.friction},   {"damping", s.damping},
+          {"friction_limit", s.friction_limit}, {"heat_partition", s.heat_partition},
           {"stiffness", s.stiffness}, {"poisson_ratio", s.poisson_ratio}};
 }
 

@@ -69,6 +69,10 @@ Material read_material(const std::string& name, const YAML::Node& n, const std::
   m.shear_modulus = r.non_negative("shear_modulus", m.shear_modulus);
   m.heat_capacity = r.non_negative("heat_capacity", m.heat_capacity);
   m.viscosity = r.non_negative("viscosity", m.viscosity);
+  m.mass_scaling = r.positive("mass_scaling", 1.0);
+  if (m.mass_scaling < 1) scene_error(r.at("mass_scaling"), "must be at least 1 (1: none)");
+  m.density *= m.mass_scaling;  // after bulk_modulus: sound_speed is the material's own
+  m.heat_capacity /= m.mass_scaling;
   for (const auto& k : registered_module_keys())
     if (k.read_material)
       if (auto params = k.read_material(r, m, preset)) m.params[k.module] = std::move(params);

@@ -50,7 +50,9 @@ const std::vector<std::string> kTypes = {"kinetic_energy",
                                          "solid_contact_pairs",
                                          "solid_contact_force",
                                          "solid_contact_neighbours",
-                                         "wall_pressure"};
+                                         "wall_pressure",
+                                         "chip_ratio",
+                                         "kinetic_share"};
 
 bool is_one_of(const std::string& type, std::initializer_list<const char*> types) {
   return std::any_of(types.begin(), types.end(), [&](const char* t) { return type == t; });
@@ -147,6 +149,31 @@ void read_sensor(MapReader& q, ProbeSpec& ps, int dim) {
   ps.size = q.positive("size");
 }
 
+// chip_ratio: the chip's thickness over the uncut chip thickness `size`. The chip is the particles
+// of `body` whose distance along `axis` (up the rake face) from `point` (on the rake face, the
+// surface's frame at t = 0) lies in `range` [s1, s2] and whose distance d along `normal` (the rake
+// face's, into the chip) lies in [-dp, 5 size]: thickness = max d - min d + dp.
+void read_chip(MapReader& q, const std::string& p, ProbeSpec& ps, const Scene& s, int dim) {
+  ps.point = q.vector("point", dim);
+  ps.axis = read_axis(q, dim);
+  Point n = q.vector("normal", dim);
+  double n2 = 0, dot = 0;
+  for (int a = 0; a < dim; ++a) n2 += n[a] * n[a], dot += n[a] * ps.axis[a];
+  if (!(n2 > 0) || !std::isfinite(n2)) scene_error(q.at("normal"), "must be a finite non-zero vector");
+  if (std::abs(dot) > 1e-6 * std::sqrt(n2))
+    scene_error(q.at("normal"), "must be perpendicular to axis (the rake face's normal)");
+  for (double& c : n) c /= std::sqrt(n2);
+  ps.normal = n;
+  ps.range = q.vector("range", 2);
+  if (!(ps.range[0] >= 0 && ps.range[0] < ps.range[1]))
+    scene_error(q.at("range"), "must be [s1, s2] with 0 <= s1 < s2 (along the rake face)");
+  ps.size = q.positive("size");
+  ps.target = q.text("body");
+  auto it = std::find_if(s.bodies.begin(), s.bodies.end(),
+                         [&](const BodySpec& b) { return b.name == ps.target; });
+  if (it == s.bodies.end()) scene_error(p + ".body", "no body named '" + ps.target + "'");
+}
+
 // `weight` multiplies the integrand of integral, mean and kinetic_energy; others reject it.
 void read_weight(MapReader& q, ProbeSpec& ps, const Scene& s) {
   if (!q.has("weight")) return void(q.optional("weight"));
@@ -227,14 +254,18 @@ ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& 
   else
     q.optional("field");
   read_weight(q, ps, s);
-  const bool on_surface =
-      is_one_of(ps.type, {"surface_force", "surface_contacts", "surface_displacement"});
-  if (on_surface && q.has("surface")) {  // the surface's name (`body` is accepted too)
+  const bool on_surface = is_one_of(
+      ps.type, {"surface_force", "surface_contacts", "surface_displacement", "chip_ratio"});
+  if (ps.type == "chip_ratio") {
+    ps.body = q.text("surface");
+    read_chip(q, p, ps, s, dim);
+  } else if (on_surface && q.has("surface")) {  // the surface's name (`body` is accepted too)
     if (q.has("body")) scene_error(p, "give either surface or body, not both");
     ps.body = q.text("surface");
   }
   if (ps.body.empty()) ps.body = q.text("body", "");
-  if (ps.type == "penetration") {
+  if (ps.type == "chip_ratio") {
+  } else if (ps.type == "penetration") {
     ps.target = q.text("target", "");
     bool found = ps.target.empty();
     for (const auto& body : s.bodies) found = found || body.name == ps.target;
@@ -244,7 +275,7 @@ ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& 
   }
   if (is_one_of(ps.type, {"value_at", "tracked", "diameter"}))
     ps.point = q.vector("point", dim);
-  else
+  else if (ps.type != "chip_ratio")
     q.optional("point");
   if (ps.type == "wall_pressure") read_sensor(q, ps, dim);
   if (ps.type == "diameter") {
@@ -255,7 +286,7 @@ ProbeSpec read_probe(const YAML::Node& node, const std::string& p, const Scene& 
     for (double& c : ps.axis) c /= std::sqrt(a2);
   } else if (ps.type == "profile") {
     read_profile(q, ps, dim);
-  } else {
+  } else if (ps.type != "chip_ratio") {
     q.optional("axis");
   }
   if (ps.type == "pieces") {

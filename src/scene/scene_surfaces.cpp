@@ -20,6 +20,13 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   q.text("name");
   s.friction = q.non_negative("friction", 0.0);
   s.damping = q.non_negative("damping", 0.0);
+  s.friction_limit = q.non_negative("friction_limit", 0.0);  // tau_max, Pa; 0: Coulomb only
+  if (q.has("friction_limit") && !(s.friction > 0))
+    scene_error(q.at("friction_limit"), "needs a friction coefficient (key friction > 0)");
+  // beta: the share of the friction work that heats the surface (lost to the scene); the rest
+  // heats the particle. 1 (the default): friction heats nothing.
+  s.heat_partition = q.non_negative("heat_partition", 1.0);
+  if (s.heat_partition > 1) scene_error(q.at("heat_partition"), "must lie in [0, 1]");
   s.stiffness = q.positive("stiffness", 0.0);
   s.poisson_ratio = q.non_negative("poisson_ratio", 0.3);
   if (s.poisson_ratio >= 0.5) scene_error(q.at("poisson_ratio"), "must be below 0.5");

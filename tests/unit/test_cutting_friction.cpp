@@ -1,0 +1,120 @@
+// The tool-chip friction of orthogonal cutting (issue 52): tau = min(mu sigma_n, tau_max) on a
+// rigid surface (surface key friction_limit), the friction work turned into heat with the share
+// beta (heat_partition) going to the surface, mass scaling (material key mass_scaling), the
+// probes chip_ratio and kinetic_share and the measure std.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "assemble.hpp"
+#include "output/probes.hpp"
+#include "rigid/rigid_surface_module.hpp"
+#include "rigid/surface.hpp"
+#include "scene/scene.hpp"
+
+using namespace monosph;
+
+namespace {
+
+template <int D>
+RigidSurfaceModule<D>* rigid_module(Simulation<D>& sim) {
+  for (auto& m : sim.modules())
+    if (auto* r = dynamic_cast<RigidSurfaceModule<D>*>(m.get())) return r;
+  return nullptr;
+}
+
+// One particle (dp = 1 mm) of a material with heat capacity pressed by gravity onto a plate
+// moving along x at 0.2 m/s; `surface_keys` adds keys to the plate.
+Scene slider(const std::string& surface_keys, const std::string& material_keys = "") {
+  return load_scene_text(fmt::format(R"(
+name: slider
+dimension: 2
+dp: 0.001
+domain: {{min: [-0.05, -0.02], max: [0.2, 0.05]}}
+materials:
+  m: {{density: 4000, bulk_modulus: 1.0e8, shear_modulus: 3.0e7, heat_capacity: 500{}}}
+bodies:
+  - {{name: p, phase: solid, material: m, shape: {{box: {{min: [0, 0], max: [0.001, 0.001]}}}}}}
+surfaces:
+  - {{name: plate, segment: [[-0.04, 0], [0.19, 0]], velocity: [0.2, 0], friction: 0.5{}}}
+body_force: [0, -2000]
+end_time: 1
+)",
+                                     material_keys, surface_keys));
+}
+
+}  // namespace
+
+TEST(CuttingFriction, LimitingShearStressCapsCoulombFriction) {
+  // Zorev's law per particle: |F_t| = mu F_n while mu F_n < tau_max dp^(D-1) (sliding), then
+  // tau_max dp^(D-1) (sticking); the friction power is |F_t| |v_t|.
+  const double R = 5e-6, e_star = 1.2e11, mu_f = 0.2, m = 1e-4, dt = 1e-8, depth = 2 * R;
+  const double cap = 576e6 * (2 * R);  // tau_max dp in 2D (N per metre of depth)
+  const Vec<2> c(0, 0), nrm(0, 1), vs(-0.5, 0), v(0.3, 0);
+  int sliding = 0, sticking = 0;
+  for (double overlap = 1e-9; overlap < R; overlap *= 1.5) {
+    double fn, power;
+    const Vec<2> f = contact_force<2>(Vec<2>(0, R - overlap), v, m, c, nrm, vs, R, e_star, mu_f,
+                                      dt, depth, &fn, 0.0, cap, &power);
+    const double ft = std::abs(f[0]), expect = std::min(mu_f * fn, cap);
+    EXPECT_NEAR(ft, expect, 1e-12 * expect);
+    EXPECT_LT(f[0], 0);  // against the particle's sliding (+x relative to the surface)
+    // the force times the mean sliding speed over the step (0.8 m/s less the deceleration)
+    EXPECT_NEAR(power, ft * (0.8 - 0.5 * ft * dt / m), 1e-12 * ft);
+    (mu_f * fn < cap ? sliding : sticking)++;
+  }
+  EXPECT_GT(sliding, 3);
+  EXPECT_GT(sticking, 3);
+}
+
+TEST(CuttingFriction, FrictionWorkHeatsTheParticleByItsShare) {
+  // The plate drags the particle up to its speed; the work the friction dissipates is the plate's
+  // work minus the particle's kinetic energy gain along the plate (from rest: m V^2 / 2, as much
+  // as the particle gains). The particle gets (1 - beta) of it as heat:
+  // m C_p dT = (1 - beta) (W_plate - dKE); with beta = 1 nothing is heated.
+  for (double beta : {0.3, 1.0}) {
+    Scene scene = slider(fmt::format(", heat_partition: {}", beta));
+    Simulation<2> sim(scene);
+    assemble_modules(sim);
+    sim.create_particles();
+    sim.init();
+    auto* rigid = rigid_module(sim);
+    ASSERT_NE(rigid, nullptr);
+    auto& p = sim.particles();
+    const int kT = p.find("temperature");
+    if (beta == 1) {  // nothing heats: no temperature field at all (no plasticity, no conduction)
+      EXPECT_LT(kT, 0);
+      continue;
+    }
+    ASSERT_GE(kT, 0);
+    const double T0 = p.view<double>(kT)[0], m = p.m()[0], ke0 = 0.5 * m * std::pow(p.v()[0][0], 2);
+    double work = 0;
+    while (sim.time() < 0.05) {
+      const double t0 = sim.time();
+      sim.advance();
+      // The force of the last pass acts over the step that follows it (kick-drift-kick): the
+      // plate's power F.V times the step.
+      work += rigid->reaction(0)[0] * -0.2 * (sim.time() - t0);
+    }
+    const double ke = 0.5 * m * std::pow(p.v()[0][0], 2);
+    EXPECT_NEAR(p.v()[0][0], 0.2, 1e-6);  // picked up the plate's speed
+    const double heat = m * 500 * (p.view<double>(kT)[0] - T0), dissipated = work - (ke - ke0);
+    EXPECT_NEAR(dissipated, 0.5 * m * 0.2 * 0.2, 0.01 * dissipated);
+    EXPECT_NEAR(heat, (1 - beta) * dissipated, 0.005 * dissipated) << beta;
+    std::printf("beta %.1f: dissipated %.6g J/m, heat %.6g J/m\n", beta, dissipated, heat);
+  }
+}
+
+TEST(CuttingFriction, MassScalingScalesInertiaNotHeat) {
+  // mass_scaling f: the particle's mass is f times, its heat capacity 1/f times, so m C_p and
+  // the friction heat stay the same.
+  Scene a = slider(", heat_partition: 0"), b = slider(", heat_partition: 0", ", mass_scaling: 100");
+  EXPECT_DOUBLE_EQ(b.materials[0].density, 100 * a.materials[0].density);
+  EXPECT_DOUBLE_EQ(b.materials[0].density * b.materials[0].heat_capacity,
+                   a.materials[0].density * a.materials[0].heat_capacity);
+  EXPECT_DOUBLE_EQ(b.materials[0].bulk_modulus, a.materials[0].bulk_modulus);
+  EXPECT_THROW(slider("", ", mass_scaling: 0.5"), InputError);
+  EXPECT_THROW(slider(", heat_partition: 1.5"), InputError);
+  EXPECT_THROW(slider(", friction_limit: -1"), InputError);
+}
