@@ -19,7 +19,8 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
     s.geometry = SurfaceGeometry<D>(surface_elements<D>(spec, where));
     s.friction = spec.friction;
     const double inf = std::numeric_limits<double>::infinity();
-    s.friction_cap = spec.friction_limit > 0 ? spec.friction_limit * std::pow(scene.dp, D - 1) : inf;
+    s.friction_cap =
+        spec.friction_limit > 0 ? spec.friction_limit * std::pow(scene.dp, D - 1) : inf;
     s.heat_partition = spec.heat_partition;
     if (s.friction > 0 && s.heat_partition < 1 && kq_ < 0) {
       auto& p = sim.particles();

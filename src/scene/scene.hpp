@@ -162,9 +162,8 @@ struct ReferenceSpec {
   double needs = -1;
   double needs_time(double scene_end_time) const {
     if (needs >= 0) return needs;
-    const bool window =
-        measure == "final" || measure == "max" || measure == "min" || measure == "mean" ||
-        measure == "std";
+    const bool window = measure == "final" || measure == "max" || measure == "min" ||
+                        measure == "mean" || measure == "std";
     return window ? scene_end_time : start;
   }
 };

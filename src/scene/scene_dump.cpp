@@ -77,13 +77,20 @@ json boundary_json(const BoundarySpec& bc) {
 }
 
 json surface_json(const SurfaceSpec& s) {
-  return {{"name", s.name},           {"kind", s.kind},
-          {"points", s.points},       {"size", {s.size[0], s.size[1]}},
-          {"file", s.file},           {"scale", s.scale},
-          {"translate", s.translate}, {"velocity", s.velocity_expr},
-          {"friction", s.friction},   {"damping", s.damping},
-          {"friction_limit", s.friction_limit}, {"heat_partition", s.heat_partition},
-          {"stiffness", s.stiffness}, {"poisson_ratio", s.poisson_ratio}};
+  return {{"name", s.name},
+          {"kind", s.kind},
+          {"points", s.points},
+          {"size", {s.size[0], s.size[1]}},
+          {"file", s.file},
+          {"scale", s.scale},
+          {"translate", s.translate},
+          {"velocity", s.velocity_expr},
+          {"friction", s.friction},
+          {"damping", s.damping},
+          {"friction_limit", s.friction_limit},
+          {"heat_partition", s.heat_partition},
+          {"stiffness", s.stiffness},
+          {"poisson_ratio", s.poisson_ratio}};
 }
 
 json probe_json(const ProbeSpec& p) {

@@ -159,7 +159,8 @@ void read_chip(MapReader& q, const std::string& p, ProbeSpec& ps, const Scene& s
   Point n = q.vector("normal", dim);
   double n2 = 0, dot = 0;
   for (int a = 0; a < dim; ++a) n2 += n[a] * n[a], dot += n[a] * ps.axis[a];
-  if (!(n2 > 0) || !std::isfinite(n2)) scene_error(q.at("normal"), "must be a finite non-zero vector");
+  if (!(n2 > 0) || !std::isfinite(n2))
+    scene_error(q.at("normal"), "must be a finite non-zero vector");
   if (std::abs(dot) > 1e-6 * std::sqrt(n2))
     scene_error(q.at("normal"), "must be perpendicular to axis (the rake face's normal)");
   for (double& c : n) c /= std::sqrt(n2);

@@ -121,8 +121,9 @@ void read_checks(MapReader& r, Scene& s) {
     for (const auto& other : s.checks)
       if (other.name == c.name) scene_error(p + " (" + c.name + ").name", "duplicate check name");
     c.probe = q.text("probe");
-    c.measure = q.choice("measure", {"final", "max", "min", "mean", "std", "drift", "growth", "trend",
-                                     "period", "frequency", "angular_frequency", "peak_ratio"});
+    c.measure =
+        q.choice("measure", {"final", "max", "min", "mean", "std", "drift", "growth", "trend",
+                             "period", "frequency", "angular_frequency", "peak_ratio"});
     if (q.has("min")) c.min = q.number("min");
     if (q.has("max")) c.max = q.number("max");
     if (!q.has("min") && !q.has("max")) scene_error(p, "give min, max or both");

@@ -55,8 +55,8 @@ TEST(CuttingFriction, LimitingShearStressCapsCoulombFriction) {
   int sliding = 0, sticking = 0;
   for (double overlap = 1e-9; overlap < R; overlap *= 1.5) {
     double fn, power;
-    const Vec<2> f = contact_force<2>(Vec<2>(0, R - overlap), v, m, c, nrm, vs, R, e_star, mu_f,
-                                      dt, depth, &fn, 0.0, cap, &power);
+    const Vec<2> f = contact_force<2>(Vec<2>(0, R - overlap), v, m, c, nrm, vs, R, e_star, mu_f, dt,
+                                      depth, &fn, 0.0, cap, &power);
     const double ft = std::abs(f[0]), expect = std::min(mu_f * fn, cap);
     EXPECT_NEAR(ft, expect, 1e-12 * expect);
     EXPECT_LT(f[0], 0);  // against the particle's sliding (+x relative to the surface)
