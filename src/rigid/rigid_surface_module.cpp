@@ -227,8 +227,10 @@ std::vector<std::string> RigidSurfaceModule<D>::probe_columns(const ProbeSpec& s
 
 template <int D>
 double RigidSurfaceModule<D>::chip_ratio(Simulation<D>& sim, const ProbeSpec& spec) const {
-  // The chip's extent normal to the rake face within the window (scene/scene_probes.cpp,
-  // read_chip), over the ranks: thickness = max d - min d + dp.
+  // The chip layer on the rake face within the window (scene/scene_probes.cpp, read_chip): the
+  // distances d normal to the face, binned dp/2 wide over the ranks; the layer runs from the
+  // nearest particle outwards until a gap wider than 1.5 dp (a curled-back part of the chip
+  // further out is not the layer). Thickness = max d - min d + dp over the layer.
   const Surface& s = s_[find(spec.body)];
   auto& p = sim.particles();
   auto x = p.x();
@@ -240,17 +242,29 @@ double RigidSurfaceModule<D>::chip_ratio(Simulation<D>& sim, const ProbeSpec& sp
   for (int a = 0; a < D; ++a)
     p0[a] = spec.point[a], axis[a] = spec.axis[a], normal[a] = spec.normal[a];
   p0 += s.displacement;
-  const double dp = sim.scene().dp;
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const double dp = sim.scene().dp, d0 = -dp, d1 = 5 * spec.size, w = 0.5 * dp;
+  const std::size_t nb = static_cast<std::size_t>(std::ceil((d1 - d0) / w));
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> lo(nb, inf), hi(nb, -inf);
   for (std::size_t i = 0; i < sim.owned(); ++i) {
     if (bd[i] != body) continue;
     const Vec<D> r = x[i] - p0;
     const double along = r.dot(axis), d = r.dot(normal);
-    if (along < spec.range[0] || along > spec.range[1] || d < -dp || d > 5 * spec.size) continue;
-    lo = std::min(lo, d), hi = std::max(hi, d);
+    if (along < spec.range[0] || along > spec.range[1] || d < d0 || d >= d1) continue;
+    const std::size_t k = std::min(nb - 1, static_cast<std::size_t>((d - d0) / w));
+    lo[k] = std::min(lo[k], d), hi[k] = std::max(hi[k], d);
   }
-  lo = sim.comm().min(lo), hi = sim.comm().max(hi);
-  return hi >= lo ? (hi - lo + dp) / spec.size : 0.0;
+  sim.comm().min(std::span<double>(lo)), sim.comm().max(std::span<double>(hi));
+  double first = inf, last = -inf;
+  for (std::size_t k = 0; k < nb; ++k) {
+    if (!(hi[k] >= lo[k])) continue;  // empty bin
+    if (first == inf)
+      first = lo[k];
+    else if (lo[k] - last > 1.5 * dp)
+      break;
+    last = hi[k];
+  }
+  return first < inf ? (last - first + dp) / spec.size : 0.0;
 }
 
 template <int D>

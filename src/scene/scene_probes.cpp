@@ -152,7 +152,8 @@ void read_sensor(MapReader& q, ProbeSpec& ps, int dim) {
 // chip_ratio: the chip's thickness over the uncut chip thickness `size`. The chip is the particles
 // of `body` whose distance along `axis` (up the rake face) from `point` (on the rake face, the
 // surface's frame at t = 0) lies in `range` [s1, s2] and whose distance d along `normal` (the rake
-// face's, into the chip) lies in [-dp, 5 size]: thickness = max d - min d + dp.
+// face's, into the chip) lies in [-dp, 5 size]; the layer from the nearest of them out to the
+// first gap wider than 1.5 dp: thickness = max d - min d + dp over it.
 void read_chip(MapReader& q, const std::string& p, ProbeSpec& ps, const Scene& s, int dim) {
   ps.point = q.vector("point", dim);
   ps.axis = read_axis(q, dim);

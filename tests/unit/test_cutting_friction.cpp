@@ -118,3 +118,41 @@ TEST(CuttingFriction, MassScalingScalesInertiaNotHeat) {
   EXPECT_THROW(slider(", heat_partition: 1.5"), InputError);
   EXPECT_THROW(slider(", friction_limit: -1"), InputError);
 }
+
+TEST(CuttingFriction, ChipRatioIsTheLayerOnTheRakeFace) {
+  // A vertical "rake face" at x = 0 (normal -x into the chip), a layer 4 dp thick on it and,
+  // 3 dp further out, a block standing for a chip curled back into the window: the probe gives
+  // the layer's thickness (4 dp) over size, not the extent of both (11 dp).
+  Scene scene = load_scene_text(R"(
+name: chip
+dimension: 2
+dp: 1.0e-5
+domain: {min: [-3.0e-4, -1.0e-4], max: [1.0e-4, 3.0e-4]}
+materials:
+  m: {density: 4000, bulk_modulus: 1.0e8, shear_modulus: 3.0e7}
+bodies:
+  - {name: layer, phase: solid, continuum: a, material: m, shape: {box: {min: [-4.0e-5, 0], max: [0, 2.0e-4]}}}
+  - {name: curl, phase: solid, continuum: a, material: m, shape: {box: {min: [-1.1e-4, 0], max: [-7.0e-5, 2.0e-4]}}}
+surfaces:
+  - {name: tool, segment: [[5.0e-6, -5.0e-5], [5.0e-6, 2.5e-4]]}
+end_time: 1
+probes:
+  list:
+    - {name: ratio, type: chip_ratio, surface: tool, body: layer, size: 2.0e-5, point: [5.0e-6, 0],
+       axis: [0, 1], normal: [-1, 0], range: [5.0e-5, 1.5e-4]}
+)");
+  Simulation<2> sim(scene);
+  assemble_modules(sim);
+  sim.create_particles();
+  sim.init();
+  auto* rigid = rigid_module(sim);
+  ASSERT_NE(rigid, nullptr);
+  std::vector<double> out;
+  rigid->probe(sim, scene.probes[0], out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(out[0], 4e-5 / 2e-5, 1e-9);        // the layer: 4 dp over 2 dp
+  for (auto& b : sim.particles().body()) b = 0;  // the curled block joins the body
+  out.clear();
+  rigid->probe(sim, scene.probes[0], out);
+  EXPECT_NEAR(out[0], 4e-5 / 2e-5, 1e-9);  // a 3 dp gap: still the layer only
+}
