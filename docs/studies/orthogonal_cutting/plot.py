@@ -53,7 +53,7 @@ def main():
                label="measured", color="black")
         for j, (label, rows) in enumerate(runs):
             vals = [float(rows[k][name + "_value"]) * scale
-                    if k in rows and rows[k][name + "_value"] else 0 for k in keys]
+                    if k in rows and rows[k]["status"] == "completed" else 0 for k in keys]
             ax.bar([x - 0.4 + width * (j + 1.5) for x in xs], vals, width, label=label)
         ax.set_xticks(list(xs))
         ax.set_xticklabels([f"{vc} m/min\n{h} um" for vc, h in keys], fontsize=8)
@@ -69,7 +69,8 @@ def main():
         sums, count = [0.0] * 3, 0
         for k in keys:
             if k not in rows or rows[k]["status"] != "completed":
-                print(f"| {k[0]} | {k[1]} | {rows.get(k, {}).get('status', 'not run')} |")
+                status = rows[k]["status"].split(" at t = ")[-1] if k in rows else "not run"
+                print(f"| {k[0]} | {k[1]} | stopped at t = {status} s | | | | | |")
                 continue
             cells, count = [], count + 1
             for q, (name, col, _, scale) in enumerate(QUANTITIES):
