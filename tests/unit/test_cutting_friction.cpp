@@ -17,10 +17,13 @@ using namespace monosph;
 
 namespace {
 
-template <int D>
-RigidSurfaceModule<D>* rigid_module(Simulation<D>& sim) {
+// Assembles and starts `sim`; its rigid-surface module (nullptr if the scene has none).
+RigidSurfaceModule<2>* start(Simulation<2>& sim) {
+  assemble_modules(sim);
+  sim.create_particles();
+  sim.init();
   for (auto& m : sim.modules())
-    if (auto* r = dynamic_cast<RigidSurfaceModule<D>*>(m.get())) return r;
+    if (auto* r = dynamic_cast<RigidSurfaceModule<2>*>(m.get())) return r;
   return nullptr;
 }
 
@@ -76,10 +79,7 @@ TEST(CuttingFriction, FrictionWorkHeatsTheParticleByItsShare) {
   for (double beta : {0.3, 1.0}) {
     Scene scene = slider(fmt::format(", heat_partition: {}", beta));
     Simulation<2> sim(scene);
-    assemble_modules(sim);
-    sim.create_particles();
-    sim.init();
-    auto* rigid = rigid_module(sim);
+    auto* rigid = start(sim);
     ASSERT_NE(rigid, nullptr);
     auto& p = sim.particles();
     const int kT = p.find("temperature");
@@ -142,10 +142,7 @@ probes:
        axis: [0, 1], normal: [-1, 0], range: [5.0e-5, 1.5e-4]}
 )");
   Simulation<2> sim(scene);
-  assemble_modules(sim);
-  sim.create_particles();
-  sim.init();
-  auto* rigid = rigid_module(sim);
+  auto* rigid = start(sim);
   ASSERT_NE(rigid, nullptr);
   std::vector<double> out;
   rigid->probe(sim, scene.probes[0], out);
