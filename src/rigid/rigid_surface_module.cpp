@@ -22,10 +22,12 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
     s.friction_cap =
         spec.friction_limit > 0 ? spec.friction_limit * std::pow(scene.dp, D - 1) : inf;
     s.heat_partition = spec.heat_partition;
-    if (s.friction > 0 && s.heat_partition < 1 && kq_ < 0) {
+    s.conductance = spec.heat_transfer * std::pow(scene.dp, D - 1);
+    s.temperature = spec.temperature;
+    if (((s.friction > 0 && s.heat_partition < 1) || s.conductance > 0) && kq_ < 0) {
       auto& p = sim.particles();
       kT_ = p.add_field("temperature", 1, FieldType::Real, true);  // the solid module's
-      kq_ = p.add_field("friction_heating", 1, FieldType::Real, true);
+      kq_ = p.add_field("surface_heating", 1, FieldType::Real, true);
       p.set_meaning({kT_, kq_}, phase_bit(kSolid) | phase_bit(kFluid));
     }
     s.damping = spec.damping;
@@ -127,8 +129,8 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
     s.force.resize(n);
     for (std::size_t k = 0; k < e_max.size(); ++k) e_max[k] = std::max(e_max[k], s.e_star[k]);
   }
-  std::span<double> q;
-  if (kq_ >= 0) q = p.template view<double>(kq_);
+  std::span<double> q, T;
+  if (kq_ >= 0) q = p.template view<double>(kq_), T = p.template view<double>(kT_);
   double w2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : w2)
   for (std::size_t i = 0; i < n; ++i) {
@@ -138,7 +140,7 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
       continue;
     }
     double delta_max = delta_floor;
-    double heating = 0;  // friction power into the particle, W (per metre of depth in 2D)
+    double heating = 0;  // friction and surface heat into the particle, W (per metre in 2D)
     Vec<D> sum = Vec<D>::Zero();
     for (int k = 0; k < ns; ++k) {
       Surface& s = s_[k];
@@ -154,11 +156,13 @@ void RigidSurfaceModule<D>::forces(Simulation<D>& sim) {
                            s.e_star[mt[i]], s.friction, dt, depth, nullptr, s.damping,
                            s.friction_cap, &power);
       heating += (1 - s.heat_partition) * power;
+      if (s.conductance > 0) heating += s.conductance * (s.temperature - T[i]);
       delta_max = std::max(delta_max, R - (xl - c).norm());
       sum += f;
     }
     a[i] += sum / m[i];
-    if (kq_ >= 0) {  // dT/dt = (1 - beta) |F_t| |v_t| / (m C_p); no heat capacity: no heating
+    // dT/dt = ((1 - beta) P + h_c dp^(D-1) (T_s - T)) / (m C_p); no heat capacity: no heating
+    if (kq_ >= 0) {
       const double cp = sim.materials()[mt[i]].heat_capacity;
       q[i] = cp > 0 ? heating / (m[i] * cp) : 0.0;
     }

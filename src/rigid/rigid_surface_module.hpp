@@ -55,6 +55,8 @@ class RigidSurfaceModule : public Module<D> {
     double friction = 0;
     double friction_cap = 0;     // tau_max dp^(D-1): the largest friction force per particle
     double heat_partition = 1;   // beta: the surface's share of the friction work
+    double conductance = 0;      // h_c dp^(D-1): W/K per touching particle (0: no heat sink)
+    double temperature = 0;      // the surface's fixed temperature
     double damping = 0;          // normal dashpot, ratio of critical
     std::vector<double> e_star;  // per material
     Vec<D> displacement = Vec<D>::Zero(), velocity = Vec<D>::Zero(), reaction = Vec<D>::Zero();
@@ -70,9 +72,9 @@ class RigidSurfaceModule : public Module<D> {
   double omega2_ = 0;  // largest contact frequency squared k/m (last force pass)
   double radius_ = 0;  // dp/2
   double depth_ = 1;   // 1 in 3D, dp in 2D
-  // Friction heating of the particles (some surface has heat_partition < 1): the fields
-  // `temperature` and `friction_heating` (dT/dt, K/s, from the last force pass; applied in drift
-  // as the heat module's conduction rate is). -1: none.
+  // Friction heat and heat transfer to the surfaces (some surface has heat_partition < 1 or
+  // heat_transfer > 0): the fields `temperature` and `surface_heating` (dT/dt, K/s, from the last
+  // force pass; applied in drift as the heat module's conduction rate is). -1: none.
   int kT_ = -1, kq_ = -1;
 };
 

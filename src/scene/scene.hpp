@@ -133,6 +133,8 @@ struct SurfaceSpec {
   double damping = 0;                      // normal dashpot, ratio of critical (0: elastic Hertz)
   double friction_limit = 0;               // limiting shear stress tau_max, Pa (0: none)
   double heat_partition = 1;               // share of the friction work the surface takes
+  double heat_transfer = 0;                // contact conductance h_c, W/(m^2 K) (0: none)
+  double temperature = 293.15;             // the surface's (fixed) temperature, K
   double stiffness = 0;                    // Young's modulus E_s; 0: rigid (E_s = infinity)
   double poisson_ratio = 0.3;              // nu_s (only with a stiffness)
 };

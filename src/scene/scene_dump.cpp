@@ -89,6 +89,7 @@ json surface_json(const SurfaceSpec& s) {
           {"damping", s.damping},
           {"friction_limit", s.friction_limit},
           {"heat_partition", s.heat_partition},
+          {"heat_transfer", s.heat_transfer}, {"temperature", s.temperature},
           {"stiffness", s.stiffness},
           {"poisson_ratio", s.poisson_ratio}};
 }

@@ -27,6 +27,11 @@ SurfaceSpec read_surface(YAML::Node node, const std::string& index_path, int dim
   // heats the particle. 1 (the default): friction heats nothing.
   s.heat_partition = q.non_negative("heat_partition", 1.0);
   if (s.heat_partition > 1) scene_error(q.at("heat_partition"), "must lie in [0, 1]");
+  // A heat sink: q = h_c (T_surface - T) through each touching particle's area dp^(D-1).
+  s.heat_transfer = q.non_negative("heat_transfer", 0.0);
+  s.temperature = q.positive("temperature", 293.15);
+  if (q.has("temperature") && !(s.heat_transfer > 0))
+    scene_error(q.at("temperature"), "needs heat_transfer > 0 (W/(m^2 K))");
   s.stiffness = q.positive("stiffness", 0.0);
   s.poisson_ratio = q.non_negative("poisson_ratio", 0.3);
   if (s.poisson_ratio >= 0.5) scene_error(q.at("poisson_ratio"), "must be below 0.5");

@@ -153,3 +153,49 @@ probes:
   rigid->probe(sim, scene.probes[0], out);
   EXPECT_NEAR(out[0], 4e-5 / 2e-5, 1e-9);  // a 3 dp gap: still the layer only
 }
+
+TEST(CuttingFriction, SurfaceHeatTransferCoolsATouchingParticle) {
+  // A particle at 400 K resting on a plate at 300 K with conductance h_c: m C_p dT/dt =
+  // h_c dp (T_s - T) per metre of depth, so T - T_s decays as exp(-t/tau), tau = rho C_p dp/h_c
+  // = 0.02 s; after tau it is 100/e K.
+  Scene scene = load_scene_text(R"(
+name: sink
+dimension: 2
+dp: 0.001
+domain: {min: [-0.05, -0.02], max: [0.2, 0.05]}
+materials:
+  m: {density: 4000, bulk_modulus: 1.0e8, shear_modulus: 3.0e7, heat_capacity: 500}
+bodies:
+  - {name: p, phase: solid, material: m, shape: {box: {min: [0, 0], max: [0.001, 0.001]}},
+     heat_conduction: {conductivity: 1}, initial: {temperature: 400}}
+surfaces:
+  - {name: plate, segment: [[-0.04, 0], [0.19, 0]], heat_transfer: 1.0e5, temperature: 300,
+     damping: 1}
+body_force: [0, -2000]
+end_time: 1
+)");
+  Simulation<2> sim(scene);
+  ASSERT_NE(start(sim), nullptr);
+  auto& p = sim.particles();
+  const int kT = p.find("temperature");
+  ASSERT_GE(kT, 0);
+  EXPECT_DOUBLE_EQ(p.view<double>(kT)[0], 400);
+  while (sim.time() < 0.02) sim.advance(0.02);
+  const double dT = p.view<double>(kT)[0] - 300;
+  EXPECT_NEAR(dT, 100 * std::exp(-1.0), 0.05);  // measured 36.7899 K
+  std::printf("T - T_s after tau: %.4f K (exact %.4f K)\n", dT, 100 * std::exp(-1.0));
+  EXPECT_THROW(load_scene_text(R"(
+name: bad
+dimension: 2
+dp: 0.001
+domain: {min: [-0.05, -0.02], max: [0.2, 0.05]}
+materials:
+  m: {density: 4000, bulk_modulus: 1.0e8, shear_modulus: 3.0e7}
+bodies:
+  - {name: p, phase: solid, material: m, shape: {box: {min: [0, 0], max: [0.001, 0.001]}}}
+surfaces:
+  - {name: plate, segment: [[-0.04, 0], [0.19, 0]], temperature: 300}
+end_time: 1
+)"),
+               InputError);
+}
