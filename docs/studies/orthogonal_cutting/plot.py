@@ -69,8 +69,9 @@ def main():
         sums, count = [0.0] * 3, 0
         for k in keys:
             if k not in rows or rows[k]["status"] != "completed":
-                status = rows[k]["status"].split(" at t = ")[-1] if k in rows else "not run"
-                print(f"| {k[0]} | {k[1]} | stopped at t = {status} s | | | | | |")
+                what = ("stopped at t = " + rows[k]["status"].split(" at t = ")[-1].rstrip(")") + " s"
+                        if k in rows else "not run")
+                print(f"| {k[0]} | {k[1]} | {what} | | | | | |")
                 continue
             cells, count = [], count + 1
             for q, (name, col, _, scale) in enumerate(QUANTITIES):
