@@ -499,6 +499,14 @@ double measure_series(const std::string& measure, const std::vector<double>& t,
   if (measure == "min") return *std::min_element(yy.begin(), yy.end());
   const double mean = std::accumulate(yy.begin(), yy.end(), 0.0) / yy.size();
   if (measure == "mean") return mean;
+  if (measure == "harmonic_mean") {  // n / sum(1/y): the ratio of means of a reciprocal rate
+    double inv = 0;
+    for (double y : yy) {
+      if (!(y > 0)) return none(fmt::format("a probe sample is not positive ({:g})", y));
+      inv += 1 / y;
+    }
+    return static_cast<double>(yy.size()) / inv;
+  }
   if (measure == "std") {  // sample standard deviation over the window
     if (yy.size() < 2) return none("fewer than two probe samples");
     double ss = 0;

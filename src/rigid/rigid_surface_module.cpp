@@ -231,13 +231,14 @@ std::vector<std::string> RigidSurfaceModule<D>::probe_columns(const ProbeSpec& s
 
 template <int D>
 double RigidSurfaceModule<D>::chip_ratio(Simulation<D>& sim, const ProbeSpec& spec) const {
-  // The chip layer on the rake face within the window (scene/scene_probes.cpp, read_chip): the
-  // distances d normal to the face, binned dp/2 wide over the ranks; the layer runs from the
-  // nearest particle outwards until a gap wider than 1.5 dp (a curled-back part of the chip
-  // further out is not the layer). Thickness = max d - min d + dp over the layer.
+  // The chip in the window (scene/scene_probes.cpp, read_chip): the particles of the body at
+  // distances s in `range` up the rake face and d in [-dp, 5 size] along its normal.
   const Surface& s = s_[find(spec.body)];
   auto& p = sim.particles();
   auto x = p.x();
+  auto v = p.v();
+  auto m = p.m();
+  auto rho = p.rho();
   auto bd = p.body();
   int body = -1;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b)
@@ -247,17 +248,32 @@ double RigidSurfaceModule<D>::chip_ratio(Simulation<D>& sim, const ProbeSpec& sp
     p0[a] = spec.point[a], axis[a] = spec.axis[a], normal[a] = spec.normal[a];
   p0 += s.displacement;
   const double dp = sim.scene().dp, d0 = -dp, d1 = 5 * spec.size, w = 0.5 * dp;
-  const std::size_t nb = static_cast<std::size_t>(std::ceil((d1 - d0) / w));
+  const bool flow = spec.method == "flow";
+  const std::size_t nb = flow ? 0 : static_cast<std::size_t>(std::ceil((d1 - d0) / w));
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> lo(nb, inf), hi(nb, -inf);
+  double sum[2] = {0, 0};  // flow: volume and volume x speed relative to the surface
   for (std::size_t i = 0; i < sim.owned(); ++i) {
     if (bd[i] != body) continue;
     const Vec<D> r = x[i] - p0;
     const double along = r.dot(axis), d = r.dot(normal);
     if (along < spec.range[0] || along > spec.range[1] || d < d0 || d >= d1) continue;
+    if (flow) {
+      const double vol = m[i] / rho[i];
+      sum[0] += vol, sum[1] += vol * (v[i] - s.velocity).norm();
+      continue;
+    }
     const std::size_t k = std::min(nb - 1, static_cast<std::size_t>((d - d0) / w));
     lo[k] = std::min(lo[k], d), hi[k] = std::max(hi[k], d);
   }
+  if (flow) {
+    // Steady chip, mass conservation: rho vc h = rho v_chip t_c, so t_c / h = vc / v_chip with
+    // v_chip the mean speed over the chip's section (a curled chip turning rigidly too).
+    sim.comm().sum(std::span<double>(sum));
+    return sum[1] > 0 ? s.velocity.norm() * sum[0] / sum[1] : 0.0;
+  }
+  // The layer from the nearest particle outwards until a gap wider than 1.5 dp (a curled-back
+  // part of the chip further out is not the layer): thickness = max d - min d + dp.
   sim.comm().min(std::span<double>(lo)), sim.comm().max(std::span<double>(hi));
   double first = inf, last = -inf;
   for (std::size_t k = 0; k < nb; ++k) {

@@ -146,6 +146,7 @@ struct ProbeSpec {
   Point point;
   Point axis;              // diameter, profile: unit direction (of the axis through `point`)
   Point normal;            // chip_ratio: the rake face's unit normal, into the chip
+  std::string method;      // chip_ratio: layer (on the rake face) or flow (mass flux)
   int min_particles = 10;  // pieces: smaller clusters (spray, single particles) are not counted
   int bins = 0;            // profile: number of bins along `axis`
   Point range;             // profile: [lo, hi] along `axis` (empty: the default range)
@@ -155,9 +156,10 @@ struct ProbeSpec {
 };
 
 struct ReferenceSpec {
-  std::string name, probe, measure;  // measure: frequency | period | final | max | min | mean | std
-  double value = 0;                  // NaN: no reference value (the measure is reported, no error)
-  double start = 0;                  // ignore probe samples before this time
+  std::string name, probe,
+      measure;       // measure: frequency | period | final | max | min | mean | std | harmonic_mean
+  double value = 0;  // NaN: no reference value (the measure is reported, no error)
+  double start = 0;  // ignore probe samples before this time
   // Simulated time the measure needs (key needs_time). Default: a window measure (final, max,
   // min, mean) needs the scene's end time as written; a frequency, period or peak ratio only
   // needs `start` (it is measurable, or not, from the samples after it).
@@ -165,7 +167,7 @@ struct ReferenceSpec {
   double needs_time(double scene_end_time) const {
     if (needs >= 0) return needs;
     const bool window = measure == "final" || measure == "max" || measure == "min" ||
-                        measure == "mean" || measure == "std";
+                        measure == "mean" || measure == "harmonic_mean" || measure == "std";
     return window ? scene_end_time : start;
   }
 };

@@ -99,7 +99,7 @@ void read_references(MapReader& r, Scene& s) {
     rs.value = q.number("value", std::numeric_limits<double>::quiet_NaN());
     rs.probe = q.text("probe");
     rs.measure = q.choice("measure", {"frequency", "angular_frequency", "period", "final", "max",
-                                      "min", "mean", "std", "peak_ratio"});
+                                      "min", "mean", "harmonic_mean", "std", "peak_ratio"});
     rs.start = q.non_negative("start", 0.0);
     if (q.has("needs_time")) rs.needs = q.non_negative("needs_time", 0.0);
     if (!names_probe_column(s.probes, rs.probe))
@@ -121,9 +121,9 @@ void read_checks(MapReader& r, Scene& s) {
     for (const auto& other : s.checks)
       if (other.name == c.name) scene_error(p + " (" + c.name + ").name", "duplicate check name");
     c.probe = q.text("probe");
-    c.measure =
-        q.choice("measure", {"final", "max", "min", "mean", "std", "drift", "growth", "trend",
-                             "period", "frequency", "angular_frequency", "peak_ratio"});
+    c.measure = q.choice("measure",
+                         {"final", "max", "min", "mean", "harmonic_mean", "std", "drift", "growth",
+                          "trend", "period", "frequency", "angular_frequency", "peak_ratio"});
     if (q.has("min")) c.min = q.number("min");
     if (q.has("max")) c.max = q.number("max");
     if (!q.has("min") && !q.has("max")) scene_error(p, "give min, max or both");

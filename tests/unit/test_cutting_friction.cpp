@@ -1,7 +1,7 @@
 // The tool-chip friction of orthogonal cutting (issue 52): tau = min(mu sigma_n, tau_max) on a
 // rigid surface (surface key friction_limit), the friction work turned into heat with the share
 // beta (heat_partition) going to the surface, mass scaling (material key mass_scaling), the
-// probes chip_ratio and kinetic_share and the measure std.
+// probes chip_ratio (layer and flow) and kinetic_share and the measures std and harmonic_mean.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -152,6 +152,55 @@ probes:
   out.clear();
   rigid->probe(sim, scene.probes[0], out);
   EXPECT_NEAR(out[0], 4e-5 / 2e-5, 1e-9);  // a 3 dp gap: still the layer only
+}
+
+TEST(CuttingFriction, ChipRatioFromFlowIsTheToolSpeedOverTheChipSpeed) {
+  // A chip 4 dp thick flowing up a vertical rake face that moves at v_s = (-1, 0) m/s: the chip
+  // moves with the tool plus 0.5 m/s up the face, so it is vc / 0.5 = 2 h thick (h = vc h /
+  // v_chip by mass conservation). Particles outside the window or of another body do not count;
+  // a chip whose particles also move across the face counts its full speed.
+  Scene scene = load_scene_text(R"(
+name: chip
+dimension: 2
+dp: 1.0e-5
+domain: {min: [-3.0e-4, -1.0e-4], max: [1.0e-4, 3.0e-4]}
+materials:
+  m: {density: 4000, bulk_modulus: 1.0e8, shear_modulus: 3.0e7}
+bodies:
+  - {name: chip, phase: solid, continuum: a, material: m, shape: {box: {min: [-4.0e-5, -5.0e-5], max: [0, 2.5e-4]}}}
+  - {name: other, phase: solid, continuum: a, material: m, shape: {box: {min: [-1.1e-4, 0], max: [-7.0e-5, 2.0e-4]}}}
+surfaces:
+  - {name: tool, segment: [[5.0e-6, -5.0e-5], [5.0e-6, 2.5e-4]], velocity: [-1, 0]}
+end_time: 1
+probes:
+  list:
+    - {name: ratio, type: chip_ratio, method: flow, surface: tool, body: chip, size: 2.0e-5,
+       point: [5.0e-6, 0], axis: [0, 1], normal: [-1, 0], range: [5.0e-5, 1.5e-4]}
+)");
+  Simulation<2> sim(scene);
+  auto* rigid = start(sim);
+  ASSERT_NE(rigid, nullptr);
+  auto& p = sim.particles();
+  const auto body = p.body();
+  for (std::size_t i = 0; i < sim.owned(); ++i) {
+    const double y = p.x()[i][1];
+    const bool window = body[i] == 0 && y >= 5e-5 && y <= 1.5e-4;
+    p.v()[i] = window ? Vec<2>(-1, 0.5) : Vec<2>(-1, 5.0);  // outside: a fast decoy
+  }
+  std::vector<double> out;
+  rigid->probe(sim, scene.probes[0], out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(out[0], 2.0, 1e-12);
+  for (std::size_t i = 0; i < sim.owned(); ++i) p.v()[i] += Vec<2>(0.3, 0.4);  // 0.3, 0.9 rel.
+  out.clear();
+  rigid->probe(sim, scene.probes[0], out);
+  EXPECT_NEAR(out[0], 1.0 / std::hypot(0.3, 0.9), 1e-12);
+  // Over time the ratio is vc / (mean chip speed): the harmonic mean of the samples.
+  const std::vector<double> t{0, 1, 2}, r{1, 2, 4};
+  EXPECT_NEAR(measure_series("harmonic_mean", t, r, 0), 3 / (1 + 0.5 + 0.25), 1e-14);
+  std::string why;
+  EXPECT_TRUE(std::isnan(measure_series("harmonic_mean", t, {1, 0, 4}, 0, &why)));
+  EXPECT_EQ(why, "a probe sample is not positive (0)");
 }
 
 TEST(CuttingFriction, SurfaceHeatTransferCoolsATouchingParticle) {
