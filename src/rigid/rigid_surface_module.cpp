@@ -45,6 +45,20 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
   }
 }
 
+// With friction heat or heat transfer the temperature field may be this module's alone (a body
+// without plasticity or conduction): it starts at the body's temperature, as there.
+template <int D>
+void RigidSurfaceModule<D>::on_create(Simulation<D>& sim) {
+  if (kT_ < 0) return;
+  auto& p = sim.particles();
+  auto T = p.template view<double>(kT_);
+  auto bd = p.body();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const BodyInfo& b = sim.bodies()[bd[i]];
+    T[i] = sim.materials()[b.material].initial_temperature(b.temperature);
+  }
+}
+
 template <int D>
 int RigidSurfaceModule<D>::find(const std::string& name) const {
   for (std::size_t k = 0; k < s_.size(); ++k)

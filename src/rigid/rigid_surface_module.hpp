@@ -19,6 +19,7 @@ class RigidSurfaceModule : public Module<D> {
   // Builds every surface of the scene (reads STL files; InputError naming the key or file).
   explicit RigidSurfaceModule(Simulation<D>& sim);
   std::string name() const override { return "rigid"; }
+  void on_create(Simulation<D>& sim) override;  // initial temperatures (surface heat only)
   void drift(Simulation<D>& sim, double dt) override;
   void forces(Simulation<D>& sim) override;
   double max_dt(Simulation<D>& sim) override;

@@ -207,7 +207,7 @@ TEST(CuttingFriction, SurfaceHeatTransferCoolsATouchingParticle) {
   // A particle at 400 K resting on a plate at 300 K with conductance h_c: m C_p dT/dt =
   // h_c dp (T_s - T) per metre of depth, so T - T_s decays as exp(-t/tau), tau = rho C_p dp/h_c
   // = 0.02 s; after tau it is 100/e K.
-  Scene scene = load_scene_text(R"(
+  const std::string text = R"(
 name: sink
 dimension: 2
 dp: 0.001
@@ -222,7 +222,8 @@ surfaces:
      damping: 1}
 body_force: [0, -2000]
 end_time: 1
-)");
+)";
+  Scene scene = load_scene_text(text);
   Simulation<2> sim(scene);
   ASSERT_NE(start(sim), nullptr);
   auto& p = sim.particles();
@@ -233,6 +234,16 @@ end_time: 1
   const double dT = p.view<double>(kT)[0] - 300;
   EXPECT_NEAR(dT, 100 * std::exp(-1.0), 0.05);  // measured 36.7899 K
   std::printf("T - T_s after tau: %.4f K (exact %.4f K)\n", dT, 100 * std::exp(-1.0));
+  // Without conduction (or plasticity) the temperature field is the surface module's alone: it
+  // starts at the body's temperature all the same.
+  std::string bare = text;
+  bare.erase(bare.find("heat_conduction"),
+             std::string("heat_conduction: {conductivity: 1}, ").size());
+  Scene bare_scene = load_scene_text(bare);
+  Simulation<2> cold(bare_scene);
+  ASSERT_NE(start(cold), nullptr);
+  EXPECT_EQ(cold.particles().find("conduction_rate"), -1);  // no heat module
+  EXPECT_DOUBLE_EQ(cold.particles().view<double>(cold.particles().find("temperature"))[0], 400);
   EXPECT_THROW(load_scene_text(R"(
 name: bad
 dimension: 2
