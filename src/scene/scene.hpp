@@ -146,7 +146,7 @@ struct ProbeSpec {
   Point point;
   Point axis;              // diameter, profile: unit direction (of the axis through `point`)
   Point normal;            // chip_ratio: the rake face's unit normal, into the chip
-  std::string method;      // chip_ratio: layer (on the rake face) or flow (mass flux)
+  std::string method;      // chip_ratio: layer, section (geometry) or flow (mass flux)
   int min_particles = 10;  // pieces: smaller clusters (spray, single particles) are not counted
   int bins = 0;            // profile: number of bins along `axis`
   Point range;             // profile: [lo, hi] along `axis` (empty: the default range)

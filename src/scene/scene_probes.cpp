@@ -153,7 +153,9 @@ void read_sensor(MapReader& q, ProbeSpec& ps, int dim) {
 // of `body` whose distance along `axis` (up the rake face) from `point` (on the rake face, the
 // surface's frame at t = 0) lies in `range` [s1, s2] and whose distance d along `normal` (the rake
 // face's, into the chip) lies in [-dp, 5 size]; the layer from the nearest of them out to the
-// first gap wider than 1.5 dp: thickness = max d - min d + dp over it. `method: flow` instead
+// first gap wider than 1.5 dp: thickness = max d - min d + dp over it. `method: section` takes
+// the widest such run instead and corrects it by the direction e of its mean flow relative to
+// the surface: the thickness normal to the flow of a chip crossing the window. `method: flow`
 // takes the chip's speed relative to the surface, |v_i - v_s| averaged over the window: by mass
 // conservation of the steady chip, thickness / h = |v_s| / chip speed (a curled chip too).
 void read_chip(MapReader& q, const std::string& p, ProbeSpec& ps, const Scene& s, int dim) {
@@ -172,7 +174,7 @@ void read_chip(MapReader& q, const std::string& p, ProbeSpec& ps, const Scene& s
   if (!(ps.range[0] >= 0 && ps.range[0] < ps.range[1]))
     scene_error(q.at("range"), "must be [s1, s2] with 0 <= s1 < s2 (along the rake face)");
   ps.size = q.positive("size");
-  ps.method = q.choice("method", {"layer", "flow"}, "layer");
+  ps.method = q.choice("method", {"layer", "section", "flow"}, "layer");
   ps.target = q.text("body");
   auto it = std::find_if(s.bodies.begin(), s.bodies.end(),
                          [&](const BodySpec& b) { return b.name == ps.target; });

@@ -152,6 +152,34 @@ probes:
   out.clear();
   rigid->probe(sim, scene.probes[0], out);
   EXPECT_NEAR(out[0], 4e-5 / 2e-5, 1e-9);  // a 3 dp gap: still the layer only
+  // method: section takes the widest run and the thickness normal to its mean flow e. With a
+  // window 10 dp deep (size 4 dp) the block is in it whole; layer and block are 4 dp wide.
+  ProbeSpec section = scene.probes[0];
+  section.method = "section", section.size = 4e-5;
+  auto& p = sim.particles();
+  for (std::size_t i = 0; i < sim.owned(); ++i) p.v()[i] = Vec<2>(0, 1);
+  auto ratio = [&] {
+    out.clear();
+    rigid->probe(sim, section, out);
+    return out.at(0);
+  };
+  EXPECT_NEAR(ratio(), 1.0, 1e-9);
+  // The layer sheared to a strip at 20 degrees, flowing along it: 4 dp wide across the window
+  // (plus the shear over the window's 9 rows), 4 dp cos 20 thick normal to its flow.
+  const double c = std::cos(0.349066), sn = std::sin(0.349066);
+  for (std::size_t i = 0; i < sim.owned(); ++i) {
+    if (p.x()[i][0] < -5e-5) continue;
+    p.x()[i][0] += (p.x()[i][1] - 1e-4) * sn / c;
+    p.v()[i] = Vec<2>(sn, c);
+  }
+  EXPECT_NEAR(ratio(), c, 1e-9);
+  // The layer leaves the window and the block flows at 0.8 along the axis: the block's
+  // thickness normal to that flow is 0.8 of its width.
+  for (std::size_t i = 0; i < sim.owned(); ++i) {
+    if (p.x()[i][0] > -6e-5) p.x()[i][1] += 1e-3;
+    if (p.x()[i][0] < -6e-5) p.v()[i] = Vec<2>(0.6, 0.8);
+  }
+  EXPECT_NEAR(ratio(), 0.8, 1e-9);
 }
 
 TEST(CuttingFriction, ChipRatioFromFlowIsTheToolSpeedOverTheChipSpeed) {
