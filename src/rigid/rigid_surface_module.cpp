@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "chip_probe.hpp"
+
 namespace monosph {
 
 template <int D>
@@ -244,100 +246,12 @@ std::vector<std::string> RigidSurfaceModule<D>::probe_columns(const ProbeSpec& s
 }
 
 template <int D>
-double RigidSurfaceModule<D>::chip_ratio(Simulation<D>& sim, const ProbeSpec& spec) const {
-  // The chip in the window (scene/scene_probes.cpp, read_chip): the particles of the body at
-  // distances s in `range` up the rake face and d in [-dp, 5 size] along its normal, binned dp/2
-  // wide in d (extent and summed velocity relative to the surface per bin).
-  const Surface& s = s_[find(spec.body)];
-  auto& p = sim.particles();
-  auto x = p.x();
-  auto v = p.v();
-  auto m = p.m();
-  auto rho = p.rho();
-  auto bd = p.body();
-  int body = -1;
-  for (std::size_t b = 0; b < sim.bodies().size(); ++b)
-    if (sim.bodies()[b].name == spec.target) body = static_cast<int>(b);
-  Vec<D> p0, axis, normal;
-  for (int a = 0; a < D; ++a)
-    p0[a] = spec.point[a], axis[a] = spec.axis[a], normal[a] = spec.normal[a];
-  p0 += s.displacement;
-  const double dp = sim.scene().dp, d0 = -dp, d1 = 5 * spec.size, w = 0.5 * dp;
-  const std::size_t nb = static_cast<std::size_t>(std::ceil((d1 - d0) / w));
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> lo(nb, inf), hi(nb, -inf), vel(nb * D, 0.0);
-  double sum[2] = {0, 0};  // flow: volume and volume x speed relative to the surface
-  for (std::size_t i = 0; i < sim.owned(); ++i) {
-    if (bd[i] != body) continue;
-    const Vec<D> r = x[i] - p0, vr = v[i] - s.velocity;
-    const double along = r.dot(axis), d = r.dot(normal);
-    if (along < spec.range[0] || along > spec.range[1] || d < d0 || d >= d1) continue;
-    const double vol = m[i] / rho[i];
-    sum[0] += vol, sum[1] += vol * vr.norm();
-    const std::size_t k = std::min(nb - 1, static_cast<std::size_t>((d - d0) / w));
-    lo[k] = std::min(lo[k], d), hi[k] = std::max(hi[k], d);
-    for (int a = 0; a < D; ++a) vel[k * D + a] += vol * vr[a];
-  }
-  const Comm& comm = sim.comm();
-  if (spec.method == "flow") {
-    // Steady chip, mass conservation: rho vc h = rho v_chip t_c, so t_c / h = vc / v_chip with
-    // v_chip the mean speed over the chip's section (a curled chip turning rigidly too).
-    comm.sum(std::span<double>(sum));
-    return sum[1] > 0 ? s.velocity.norm() * sum[0] / sum[1] : 0.0;
-  }
-  comm.min(std::span<double>(lo)), comm.max(std::span<double>(hi));
-  comm.sum(std::span<double>(vel));
-  // Runs of occupied bins without a gap wider than 1.5 dp. layer: the run from the nearest
-  // particle (a curled-back part further out is not the layer), thickness max d - min d + dp.
-  // section: the widest run, e the direction of its mean velocity relative to the surface: the
-  // thickness normal to the flow of a chip crossing the window.
-  const bool section = spec.method == "section";
-  double first = inf, last = -inf, best = 0, best_first = 0, best_last = 0;
-  Vec<D> flow = Vec<D>::Zero(), best_flow = Vec<D>::Zero();
-  for (std::size_t k = 0; k <= nb; ++k) {
-    const bool occupied = k < nb && hi[k] >= lo[k];
-    if (occupied && first < inf && lo[k] - last <= 1.5 * dp) {
-      last = hi[k];
-    } else if (occupied || k == nb) {
-      if (first < inf && last - first + dp > best)
-        best = last - first + dp, best_flow = flow, best_first = first, best_last = last;
-      if (first < inf && !section) break;  // layer: the first run only
-      if (k == nb) break;
-      first = lo[k], last = hi[k], flow.setZero();
-    } else {
-      continue;
-    }
-    for (int a = 0; a < D; ++a) flow[a] += vel[k * D + a];
-  }
-  if (!section) return best / spec.size;
-  // A strip of thickness t flowing along e: its particles at the least and the greatest d lie
-  // at s_first and s_last along the axis, d_last - d_first + dp = (t + (s_last - s_first)
-  // (e.normal)) / (e.axis), so t = |extent (e.axis) - (s_last - s_first) (e.normal)| (the
-  // positions along the axis from a second pass: the extremes may be on other ranks).
-  const double f = best_flow.norm();
-  if (!(f > 0)) return 0.0;
-  double at[4] = {0, 0, 0, 0};  // sum and count of s at d = first, at d = last
-  for (std::size_t i = 0; i < sim.owned(); ++i) {
-    if (bd[i] != body) continue;
-    const Vec<D> r = x[i] - p0;
-    const double along = r.dot(axis), d = r.dot(normal);
-    if (along < spec.range[0] || along > spec.range[1]) continue;
-    if (d == best_first) at[0] += along, at[1] += 1;
-    if (d == best_last) at[2] += along, at[3] += 1;
-  }
-  comm.sum(std::span<double>(at));
-  const Vec<D> e = best_flow / f;
-  const double ds = at[1] > 0 && at[3] > 0 ? at[2] / at[3] - at[0] / at[1] : 0.0;
-  return std::abs(best * e.dot(axis) - ds * e.dot(normal)) / spec.size;
-}
-
-template <int D>
 void RigidSurfaceModule<D>::probe(Simulation<D>& sim, const ProbeSpec& spec,
                                   std::vector<double>& out) {
   const Surface& s = s_[find(spec.body)];
   sync(sim.time());
   if (spec.type == "chip_ratio")
-    out.push_back(chip_ratio(sim, spec));
+    out.push_back(chip_ratio(sim, spec, s.displacement, s.velocity));
   else if (spec.type == "surface_force")
     for (int a = 0; a < D; ++a) out.push_back(s.reaction[a]);
   else if (spec.type == "surface_displacement")

@@ -65,7 +65,6 @@ class RigidSurfaceModule : public Module<D> {
     std::vector<Vec<D>> force;  // per particle
   };
   Vec<D> velocity_at(const Surface& s, double t) const;
-  double chip_ratio(Simulation<D>& sim, const ProbeSpec& spec) const;  // probe chip_ratio
   void sync(double t);  // displacements at time t from t = 0 (a restart)
 
   std::vector<Surface> s_;
