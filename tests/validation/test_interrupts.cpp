@@ -267,6 +267,25 @@ TEST(Interrupts, TrackedProbeFollowsTheSameParticleAfterARestart) {
   expect_same_checkpoint(full + "/final.h5", half + "/final.h5");
 }
 
+TEST(Interrupts, RestartTakesANewOutputIntervalAndEndTime) {
+  // A run that wrote only its first and last frame (every: 0), continued from final.h5 with
+  // output.every = 0.01 and a later end_time: frames at 0.01 s steps after the restart, and
+  // the last one at the new end (before the fix, the stored schedule of the first run held:
+  // one frame at the end).
+  const std::string dir = out_dir("restart_output_every");
+  auto a = run_monosph("run " + kScene + " --out " + dir +
+                       " --threads 1 --quiet --set dp=0.005 end_time=0.05 output.every=0");
+  ASSERT_EQ(a.code, 0) << a.output;
+  ASSERT_EQ(read_pvd(dir + "/acoustic_wave.pvd").size(), 2u);
+  auto b = run_monosph("run --restart " + dir + "/final.h5 --out " + dir +
+                       " --threads 1 --quiet --set end_time=0.1 output.every=0.01");
+  ASSERT_EQ(b.code, 0) << b.output;
+  auto frames = read_pvd(dir + "/acoustic_wave.pvd");
+  ASSERT_EQ(frames.size(), 7u);  // 0, 0.05, then 0.06 ... 0.1
+  for (std::size_t k = 2; k < frames.size(); ++k)
+    EXPECT_NEAR(frames[k].time, 0.05 + 0.01 * static_cast<double>(k - 1), 1e-9) << k;
+}
+
 TEST(OutputFolder, ASecondRunIntoTheFolderStopsWithOneLineAStaleLockDoesNot) {
   const std::string dir = out_dir("lock_busy");
   const std::string run = std::string(MONOSPH_BIN) + " run " + kScene + " --out " + dir;

@@ -19,7 +19,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REF = os.path.join(HERE, "../../../../shared/reference/data/cutting_ti6al4v_ducobu2024.csv")
 QUANTITIES = [("cutting_force", "exp_Fc_N_per_mm", "Fc (N/mm)", 1e-3),
               ("feed_force", "exp_Ff_N_per_mm", "Ff (N/mm)", 1e-3),
-              ("chip_ratio", "exp_chip_ratio", "chip thickness ratio", 1.0)]
+              ("chip_ratio", "exp_chip_ratio", "chip thickness ratio", 1.0),
+              ("chip_ratio_flow", "exp_chip_ratio", "chip ratio by mass flux", 1.0)]
 
 
 def read_reference():
@@ -45,15 +46,19 @@ def main():
         path, _, label = s.partition(":")
         runs.append((label or os.path.basename(path), read_study(path)))
     keys = sorted(set().union(*[set(r) for _, r in runs]))
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
+    quantities = [q for q in QUANTITIES  # the flow chip ratio where a study has it
+                  if q[0] != "chip_ratio_flow"
+                  or any(q[0] + "_value" in r for _, rows in runs for r in rows.values())]
+    fig, axes = plt.subplots(1, len(quantities), figsize=(5 * len(quantities), 4.5))
     width = 0.8 / (1 + len(runs))
-    for ax, (name, col, title, scale) in zip(axes, QUANTITIES):
+    for ax, (name, col, title, scale) in zip(axes, quantities):
         xs = range(len(keys))
         ax.bar([x - 0.4 + width / 2 for x in xs], [float(ref[k][col]) for k in keys], width,
                label="measured", color="black")
         for j, (label, rows) in enumerate(runs):
             vals = [float(rows[k][name + "_value"]) * scale
-                    if k in rows and rows[k]["status"] == "completed" else 0 for k in keys]
+                    if k in rows and rows[k]["status"] == "completed"
+                    and rows[k].get(name + "_value") else 0 for k in keys]
             ax.bar([x - 0.4 + width * (j + 1.5) for x in xs], vals, width, label=label)
         ax.set_xticks(list(xs))
         ax.set_xticklabels([f"{vc} m/min\n{h} um" for vc, h in keys], fontsize=8)
@@ -64,17 +69,20 @@ def main():
     # Markdown table: per run and condition the simulated values and errors.
     for label, rows in runs:
         print(f"\n{label}\n")
-        print("| vc m/min | h um | Fc | err | Ff | err | chip ratio | err |")
-        print("|---|---|---|---|---|---|---|---|")
-        sums, count = [0.0] * 3, 0
+        flow = any(r.get("chip_ratio_flow_value") for r in rows.values())
+        qs = [q for q in quantities if q[0] != "chip_ratio_flow" or flow]
+        print("| vc m/min | h um | Fc | err | Ff | err | chip ratio | err |"
+              + (" chip ratio (flow) | err |" if flow else ""))
+        print("|---|---|---|---|---|---|---|---|" + ("---|---|" if flow else ""))
+        sums, count = [0.0] * len(qs), 0
         for k in keys:
             if k not in rows or rows[k]["status"] != "completed":
                 what = ("stopped at t = " + rows[k]["status"].split(" at t = ")[-1].rstrip(")") + " s"
                         if k in rows else "not run")
-                print(f"| {k[0]} | {k[1]} | {what} | | | | | |")
+                print(f"| {k[0]} | {k[1]} | {what} | | | | | |" + (" | |" if flow else ""))
                 continue
             cells, count = [], count + 1
-            for q, (name, col, _, scale) in enumerate(QUANTITIES):
+            for q, (name, col, _, scale) in enumerate(qs):
                 sim, meas = float(rows[k][name + "_value"]) * scale, float(ref[k][col])
                 sums[q] += abs(sim - meas) / meas
                 cells.append(f"{sim:.3g} ({meas:.3g}) | {100 * (sim - meas) / meas:+.1f} %")
