@@ -159,13 +159,12 @@ Schedule start(Simulation<D>& sim, const CheckpointMeta* restart_meta,
     next.probe = get("next_probe", 0);
     next.checkpoint = get("next_checkpoint", scene.checkpoint_every);
     // --set output.every, output.checkpoint_every or end_time (the last frame of every: 0) on a
-    // restart: that schedule starts anew at the restart's time.
-    if (scene.output_every <= 0)
-      next.output = scene.end_time;
-    else if (get("output_every", scene.output_every) != scene.output_every)
-      next.output = sim.time() + scene.output_every;
-    if (get("checkpoint_every", scene.checkpoint_every) != scene.checkpoint_every)
-      next.checkpoint = sim.time() + scene.checkpoint_every;
+    // restart: the next frame and checkpoint come at the latest one new interval on.
+    const double t = sim.time();
+    next.output =
+        scene.output_every > 0 ? std::min(next.output, t + scene.output_every) : scene.end_time;
+    if (scene.checkpoint_every > 0)
+      next.checkpoint = std::min(next.checkpoint, t + scene.checkpoint_every);
     sim.set_substeps(static_cast<int>(get("substeps", 1)));
     sim.load_state(restart_meta->scalars);
     for (const auto& m : sim.modules()) m->load_state(sim, restart_meta->scalars);
@@ -225,8 +224,6 @@ CheckpointMeta checkpoint_meta(Simulation<D>& sim, const Schedule& next, long pr
   meta.scalars["next_output"] = next.output;
   meta.scalars["next_probe"] = next.probe;
   meta.scalars["next_checkpoint"] = next.checkpoint;
-  meta.scalars["output_every"] = sim.scene().output_every;
-  meta.scalars["checkpoint_every"] = sim.scene().checkpoint_every;
   meta.scalars["reference_end_time"] = sim.scene().reference_end_time;
   meta.scalars["probe_rows"] = static_cast<double>(probe_rows);
   meta.scalars["substeps"] = sim.substeps();
