@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/initial_temperature.hpp"
+
 namespace monosph {
 
 template <int D>
@@ -31,13 +33,7 @@ bool HeatModule<D>::needed(const Simulation<D>& sim) {
 // The initial temperature (Material::initial_temperature, as the solid module sets it).
 template <int D>
 void HeatModule<D>::on_create(Simulation<D>& sim) {
-  auto& p = sim.particles();
-  auto T = p.template view<double>(kT_);
-  auto bd = p.body();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const BodyInfo& b = sim.bodies()[bd[i]];
-    T[i] = sim.materials()[b.material].initial_temperature(b.temperature);
-  }
+  set_initial_temperatures(sim, kT_);
 }
 
 // Cleary & Monaghan 1999 (J. Comput. Phys. 148:227): c_i dT_i/dt = sum_j 4 m_j / (rho_i rho_j)

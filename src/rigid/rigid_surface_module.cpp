@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "chip_probe.hpp"
+#include "core/initial_temperature.hpp"
 
 namespace monosph {
 
@@ -51,14 +52,7 @@ RigidSurfaceModule<D>::RigidSurfaceModule(Simulation<D>& sim) {
 // without plasticity or conduction): it starts at the body's temperature, as there.
 template <int D>
 void RigidSurfaceModule<D>::on_create(Simulation<D>& sim) {
-  if (kT_ < 0) return;
-  auto& p = sim.particles();
-  auto T = p.template view<double>(kT_);
-  auto bd = p.body();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const BodyInfo& b = sim.bodies()[bd[i]];
-    T[i] = sim.materials()[b.material].initial_temperature(b.temperature);
-  }
+  if (kT_ >= 0) set_initial_temperatures(sim, kT_);
 }
 
 template <int D>
